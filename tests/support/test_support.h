@@ -1,0 +1,33 @@
+#pragma once
+
+// Small helpers shared by the tests.
+
+#include <filesystem>
+#include <string>
+
+namespace avc::testing {
+
+// A fresh, empty directory under the system temp dir, removed by the destructor.
+class TempDir {
+ public:
+  explicit TempDir(const std::string& prefix = "avc-test");
+  ~TempDir();
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+// The build tree (ctest sets AVC_BUILD_DIR) and the source tree (AVC_SOURCE_DIR).
+std::filesystem::path BuildDir();
+std::filesystem::path SourceDir();
+// build/bin/<name>: our executables.
+std::filesystem::path Executable(const std::string& name);
+
+std::string ReadFile(const std::filesystem::path& path);
+void WriteFile(const std::filesystem::path& path, const std::string& contents);
+
+}  // namespace avc::testing
