@@ -15,6 +15,8 @@ struct Bus::Instance {
 struct Bus::Subscription {
   Bus* bus;
   RawHandler handler;
+  Instance* instance = nullptr;
+  lcm::Subscription* lcm_subscription = nullptr;
 };
 
 namespace {
@@ -75,16 +77,28 @@ int64_t Bus::NextSeq(const std::string& channel) {
   return ++seq_[channel];
 }
 
-void Bus::SubscribeRegex(Link link, const std::string& channel_regex, RawHandler handler,
-                         int queue_capacity) {
-  auto subscription = std::make_unique<Subscription>(Subscription{this, std::move(handler)});
-  lcm::Subscription* lcm_subscription =
-      InstanceFor(link).lcm.subscribeFunction(channel_regex, &Bus::Trampoline, subscription.get());
-  if (lcm_subscription == nullptr) {
+Bus::SubscriptionId Bus::SubscribeRegex(Link link, const std::string& channel_regex,
+                                        RawHandler handler, int queue_capacity) {
+  auto subscription = std::make_unique<Subscription>();
+  subscription->bus = this;
+  subscription->handler = std::move(handler);
+  subscription->instance = &InstanceFor(link);
+  subscription->lcm_subscription = subscription->instance->lcm.subscribeFunction(
+      channel_regex, &Bus::Trampoline, subscription.get());
+  if (subscription->lcm_subscription == nullptr) {
     throw BusError("LCM refused the subscription '" + channel_regex + "'");
   }
-  lcm_subscription->setQueueCapacity(queue_capacity);
-  subscriptions_.push_back(std::move(subscription));
+  subscription->lcm_subscription->setQueueCapacity(queue_capacity);
+  const SubscriptionId id = next_subscription_id_++;
+  subscriptions_.emplace(id, std::move(subscription));
+  return id;
+}
+
+void Bus::Unsubscribe(SubscriptionId id) {
+  auto it = subscriptions_.find(id);
+  if (it == subscriptions_.end()) return;
+  it->second->instance->lcm.unsubscribe(it->second->lcm_subscription);
+  subscriptions_.erase(it);
 }
 
 void Bus::Trampoline(const lcm::ReceiveBuffer* rbuf, const std::string& channel,

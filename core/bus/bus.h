@@ -15,7 +15,6 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
-#include <list>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -97,13 +96,17 @@ class Bus {
   // Publishes encoded bytes on a full channel name (recorder, replay, bridges).
   void PublishRaw(Link link, const std::string& full_channel, const void* data, size_t size);
 
+  // Identifies a subscription for Unsubscribe.
+  using SubscriptionId = uint64_t;
+
   // Calls handler with each message on "<cell>/<name>" that decodes as T. The subscription
-  // lives as long as the Bus.
+  // lives until Unsubscribe or the Bus's end: objects that subscribe and die before the Bus
+  // must unsubscribe in their destructor.
   template <class T>
-  void Subscribe(std::string_view name, std::function<void(const T&, const RxInfo&)> handler,
+  SubscriptionId Subscribe(std::string_view name, std::function<void(const T&, const RxInfo&)> handler,
                  SubscribeOptions options = {}) {
     const std::string channel = FullChannel(name);
-    SubscribeRegex(
+    return SubscribeRegex(
         options.link, std::regex_replace(channel, std::regex(R"([.^$|()\[\]{}*+?\\])"), R"(\$&)"),
         [this, handler = std::move(handler)](const uint8_t* data, size_t size,
                                              const RxInfo& info) {
@@ -119,8 +122,10 @@ class Bus {
   }
 
   // Raw bytes of every message whose full channel name matches the regex (LCM anchors it).
-  void SubscribeRegex(Link link, const std::string& channel_regex, RawHandler handler,
-                      int queue_capacity = 0);
+  SubscriptionId SubscribeRegex(Link link, const std::string& channel_regex, RawHandler handler,
+                                int queue_capacity = 0);
+  // Ends a subscription. Not from inside that subscription's own handler.
+  void Unsubscribe(SubscriptionId id);
 
   // Records a malformed message: counted, logged (rate-limited), never fatal.
   void Reject(const RxInfo& info, const std::string& why);
@@ -168,7 +173,8 @@ class Bus {
   const Clock* clock_;
   std::unique_ptr<Instance> control_;
   std::unique_ptr<Instance> bulk_;  // null when both links share control_
-  std::list<std::unique_ptr<Subscription>> subscriptions_;
+  std::map<SubscriptionId, std::unique_ptr<Subscription>> subscriptions_;
+  SubscriptionId next_subscription_id_ = 1;
 
   std::mutex publish_mutex_;
   std::map<std::string, int64_t> seq_;  // guarded by publish_mutex_

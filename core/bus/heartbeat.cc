@@ -50,7 +50,7 @@ void HeartbeatPublisher::Set(ServiceState state, std::string detail) {
 }
 
 void HeartbeatPublisher::PublishNow() {
-  avc::heartbeat_t beat;
+  avc::heartbeat_t beat{};
   beat.service = service_;
   beat.host = host_;
   beat.pid = static_cast<int32_t>(getpid());

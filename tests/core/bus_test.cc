@@ -22,7 +22,7 @@ TEST(Bus, TypedPublishSubscribeStampsHeader) {
     got.push_back(ack);
     channels_seen.push_back(info.channel);
   });
-  avc::ack_t ack;
+  avc::ack_t ack{};
   ack.request_id = "r1";
   ack.status = avc::ack_t::STATUS_DONE;
   bus.Publish(channels::kAck, ack);
@@ -45,7 +45,7 @@ TEST(Bus, OtherCellsAreNotHeard) {
   Bus bus(InProcessBusOptions("cell1"));
   int heard = 0;
   bus.Subscribe<avc::ack_t>(channels::kAck, [&](const avc::ack_t&, const RxInfo&) { ++heard; });
-  avc::ack_t ack;
+  avc::ack_t ack{};
   const int size = ack.getEncodedSize();
   std::vector<uint8_t> bytes(static_cast<size_t>(size));
   ack.encode(bytes.data(), 0, size);
@@ -63,7 +63,7 @@ TEST(Bus, MalformedMessagesAreCountedNotDelivered) {
   bus.PublishRaw(Link::kControl, bus.FullChannel(channels::kAck), garbage.data(), garbage.size());
   bus.PublishRaw(Link::kControl, bus.FullChannel(channels::kAck), garbage.data(), 0);
   // A structurally different type on the channel fails the fingerprint check.
-  avc::log_text_t wrong;
+  avc::log_text_t wrong{};
   bus.PublishUnstamped(channels::kAck, wrong);
   bus.DispatchPending();
   EXPECT_EQ(heard, 0);
@@ -77,7 +77,7 @@ TEST(Bus, ThrowingHandlerIsCountedAndOthersStillRun) {
     throw std::runtime_error("handler bug");
   });
   bus.Subscribe<avc::ack_t>(channels::kAck, [&](const avc::ack_t&, const RxInfo&) { ++later; });
-  avc::ack_t ack;
+  avc::ack_t ack{};
   bus.Publish(channels::kAck, ack);
   bus.Publish(channels::kAck, ack);
   bus.DispatchPending();
@@ -89,7 +89,7 @@ TEST(Bus, OversizedMessageIsRefusedBeforeSending) {
   BusOptions options = InProcessBusOptions();
   options.max_message_bytes = 10'000;
   Bus bus(options);
-  avc::log_text_t big;
+  avc::log_text_t big{};
   big.text.assign(20'000, 'x');
   try {
     bus.Publish(channels::kLog, big);
@@ -113,7 +113,7 @@ TEST(Bus, InjectedLossIsSeededAndCounted) {
     std::vector<int64_t> seqs;
     bus.Subscribe<avc::ack_t>(channels::kAck,
                               [&](const avc::ack_t& a, const RxInfo&) { seqs.push_back(a.header.seq); });
-    avc::ack_t ack;
+    avc::ack_t ack{};
     for (int i = 0; i < 200; ++i) bus.Publish(channels::kAck, ack);
     bus.DispatchPending();
     EXPECT_EQ(static_cast<int64_t>(seqs.size()) + bus.stats().injected_drops, 200);

@@ -1,0 +1,28 @@
+// avc: the one command-line tool of the Active Vision Cell.
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+#include "core/util/log.h"
+#include "tools/avc/commands.h"
+
+int main(int argc, char** argv) {
+  avc::log::SetProcessName("avc");
+  CLI::App app{
+      "avc - Active Vision Cell: scans a plant into a 3D surface model.\n"
+      "Run 'avc COMMAND --help' for the options of a command."};
+  app.require_subcommand(1);
+  app.fallthrough(false);
+  int exit_code = 0;
+  avc::cli::RegisterVersion(app, &exit_code);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const std::exception& e) {
+    std::cerr << "avc: " << e.what() << "\n";
+    return 1;
+  }
+  return exit_code;
+}
