@@ -45,8 +45,10 @@ EventLoop::EventLoop() {
 EventLoop::~EventLoop() {
   if (owns_signals_) {
     // Restore default dispositions so a later signal is not written into a dead pipe.
-    signal(SIGINT, SIG_DFL);
-    signal(SIGTERM, SIG_DFL);
+    for (int signo : handled_signals_) signal(signo, SIG_DFL);
+    close(g_signal_pipe[0]);
+    close(g_signal_pipe[1]);
+    g_signal_pipe[0] = g_signal_pipe[1] = -1;
     g_signals_owned = false;
   }
   close(wake_fd_);
@@ -105,7 +107,10 @@ void EventLoop::OnSignals(const std::vector<int>& signals, std::function<void(in
   action.sa_handler = WriteSignalToPipe;
   sigemptyset(&action.sa_mask);
   action.sa_flags = SA_RESTART;
-  for (int signo : signals) sigaction(signo, &action, nullptr);
+  for (int signo : signals) {
+    sigaction(signo, &action, nullptr);
+    handled_signals_.push_back(signo);
+  }
 }
 
 void EventLoop::QuitOnTerminationSignals(std::function<void(int)> on_signal) {
@@ -164,8 +169,7 @@ bool EventLoop::RunOnce(Duration max_wait) {
 bool EventLoop::RunUntil(const std::function<bool()>& done, Duration timeout) {
   const auto end = std::chrono::steady_clock::now() + timeout;
   while (!done()) {
-    const auto left =
-        std::chrono::duration_cast<Duration>(end - std::chrono::steady_clock::now());
+    const auto left = std::chrono::duration_cast<Duration>(end - std::chrono::steady_clock::now());
     if (left <= Duration::zero() || quitting()) return done();
     RunOnce(std::min<Duration>(left, std::chrono::milliseconds(50)));
   }

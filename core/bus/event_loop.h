@@ -82,6 +82,7 @@ class EventLoop {
 
   std::function<void(int)> on_signal_;
   bool owns_signals_ = false;
+  std::vector<int> handled_signals_;  // restored to SIG_DFL on destruction
   int termination_signal_ = 0;
 };
 

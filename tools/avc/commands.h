@@ -8,5 +8,12 @@
 namespace avc::cli {
 
 void RegisterVersion(CLI::App& root, int* exit_code);
+void RegisterRecord(CLI::App& root, int* exit_code);
+void RegisterReplay(CLI::App& root, int* exit_code);
+void RegisterCollect(CLI::App& root, int* exit_code);
+void RegisterUp(CLI::App& root, int* exit_code);
+void RegisterBench(CLI::App& root, int* exit_code);
+void RegisterStatus(CLI::App& root, int* exit_code);
+void RegisterSpy(CLI::App& root, int* exit_code);
 
 }  // namespace avc::cli

@@ -16,6 +16,13 @@ int main(int argc, char** argv) {
   app.fallthrough(false);
   int exit_code = 0;
   avc::cli::RegisterVersion(app, &exit_code);
+  avc::cli::RegisterRecord(app, &exit_code);
+  avc::cli::RegisterReplay(app, &exit_code);
+  avc::cli::RegisterCollect(app, &exit_code);
+  avc::cli::RegisterUp(app, &exit_code);
+  avc::cli::RegisterStatus(app, &exit_code);
+  avc::cli::RegisterSpy(app, &exit_code);
+  avc::cli::RegisterBench(app, &exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

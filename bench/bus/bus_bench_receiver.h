@@ -1,0 +1,23 @@
+#pragma once
+
+// The receiving process of `avc bench bus`: a product receiver named "bench-receiver" on
+// PRODUCT/BENCH that counts what it delivers per phase and, on SIGTERM, writes a JSON report.
+
+#include <string>
+
+#include "core/bus/bus_options.h"
+
+namespace avc::bench {
+
+inline constexpr char kBenchReceiverName[] = "bench-receiver";
+inline constexpr char kBenchReceiverService[] = "avc-bench-receiver";
+
+struct BusBenchReceiverOptions {
+  bus::BusFlags bus;
+  std::string report_file;
+};
+
+// Runs until SIGTERM/SIGINT; returns the process exit code.
+int RunBusBenchReceiver(const BusBenchReceiverOptions& options);
+
+}  // namespace avc::bench

@@ -1,0 +1,150 @@
+// The avc commands that talk to a live bus, as real processes in a private network namespace:
+// status sees a running service, spy starts lcm-spy with every AVC type, bench bus delivers
+// every product.
+
+#include <gtest/gtest.h>
+#include <signal.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "core/launch/child_process.h"
+#include "core/util/clock.h"
+#include "tests/support/test_support.h"
+
+namespace avc {
+namespace {
+
+using testing::Executable;
+using testing::ReadFile;
+using testing::TempDir;
+
+struct Outcome {
+  int status = -1;
+  std::string output;
+};
+
+// Runs a command to completion (killed after timeout) and returns its output.
+Outcome RunCommand(const std::vector<std::string>& argv, const std::filesystem::path& log,
+                   std::chrono::seconds timeout) {
+  launch::ChildProcess child = launch::ChildProcess::Spawn({argv, {}, "", log.string()});
+  std::optional<int> status = child.WaitFor(timeout);
+  if (!status) {
+    child.Signal(SIGKILL);
+    status = child.WaitFor(std::chrono::seconds(5));
+  }
+  return {status.value_or(-1), ReadFile(log)};
+}
+
+// The last non-empty line of a command's output: where --json puts its document.
+std::string LastLine(const std::string& output) {
+  const size_t end = output.find_last_not_of("\n");
+  if (end == std::string::npos) return {};
+  const size_t begin = output.rfind('\n', end);
+  return output.substr(begin == std::string::npos ? 0 : begin + 1, end + 1 - (begin + 1));
+}
+
+int ExitCode(int status) { return WIFEXITED(status) ? WEXITSTATUS(status) : -1; }
+
+TEST(CliCommands, StatusListsARunningService) {
+  TempDir dir;
+  launch::ChildProcess collector = launch::ChildProcess::Spawn(
+      {{Executable("avc").string(), "collect", "-o", (dir / "products").string()},
+       {},
+       "",
+       (dir / "collect.log").string()});
+  nlohmann::json collect;
+  std::string last_output;
+  const int64_t deadline = MonotonicMicros() + 20'000'000;
+  while (collect.is_null() && MonotonicMicros() < deadline) {
+    std::filesystem::remove(dir / "status.log");
+    const Outcome status =
+        RunCommand({Executable("avc").string(), "status", "--json", "--listen", "1.2"},
+                   dir / "status.log", std::chrono::seconds(10));
+    last_output = status.output;
+    const nlohmann::json report = nlohmann::json::parse(LastLine(status.output), nullptr, false);
+    if (!report.is_object()) continue;
+    for (const auto& service : report["services"]) {
+      if (service["service"] == "avc-collect" && service["state"] == "READY") collect = service;
+    }
+  }
+  ASSERT_FALSE(collect.is_null()) << "avc status never listed avc-collect as READY:\n"
+                                  << last_output << "\navc collect:\n"
+                                  << ReadFile(dir / "collect.log");
+  EXPECT_EQ(collect["pid"].get<int>(), collector.pid());
+  EXPECT_EQ(collect["cell"], "cell0");
+  EXPECT_LT(collect["age_s"].get<double>(), 2.5);
+  collector.Signal(SIGTERM);
+  const std::optional<int> stopped = collector.WaitFor(std::chrono::seconds(10));
+  ASSERT_TRUE(stopped.has_value());
+  EXPECT_EQ(ExitCode(*stopped), 0) << launch::DescribeWaitStatus(*stopped);
+}
+
+TEST(CliCommands, StatusSaysWhenNobodyIsThere) {
+  TempDir dir;
+  const Outcome status =
+      RunCommand({Executable("avc").string(), "status", "--listen", "0.3", "--cell", "empty"},
+                 dir / "status.log", std::chrono::seconds(10));
+  EXPECT_EQ(ExitCode(status.status), 1);
+  EXPECT_NE(status.output.find("no heartbeats on cell empty"), std::string::npos) << status.output;
+}
+
+// lcm-spy under Xvfb finds every AVC type: the jar is on its CLASSPATH and Java 17 accepts the
+// Debian wrapper's options.
+TEST(CliCommands, SpyStartsWithEveryMessageType) {
+  if (!std::filesystem::exists("/usr/bin/xvfb-run") ||
+      !std::filesystem::exists(testing::BuildDir() / "avc-lcmtypes.jar")) {
+    GTEST_SKIP() << "needs xvfb-run and a JDK (both installed by scripts/setup)";
+  }
+  size_t types = 0;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(testing::SourceDir() / "lcmtypes" / "avc")) {
+    types += entry.path().extension() == ".lcm";
+  }
+  TempDir dir;
+  launch::ChildProcess spy = launch::ChildProcess::Spawn(
+      {{"xvfb-run", "-a", Executable("avc").string(), "spy"}, {}, "", (dir / "spy.log").string()});
+  const std::string expected = "Found " + std::to_string(types) + " LCM types";
+  std::string log;
+  const int64_t deadline = MonotonicMicros() + 40'000'000;
+  while (log.find(expected) == std::string::npos && spy.running() && MonotonicMicros() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));  // polling a log, not readiness
+    log = ReadFile(dir / "spy.log");
+  }
+  EXPECT_NE(log.find(expected), std::string::npos) << log;
+  EXPECT_EQ(log.find("Unrecognized option"), std::string::npos) << log;
+  EXPECT_TRUE(spy.running()) << "lcm-spy exited early:\n" << log;
+  spy.Signal(SIGTERM);
+  spy.WaitFor(std::chrono::seconds(10));
+}
+
+// A small run of the bus benchmark: two real processes, every product delivered exactly once in
+// every configuration, and the JSON report is complete. Products stay below the kernel default
+// receive buffer (CI cannot raise rmem_max), so even the baselines must deliver everything.
+TEST(CliCommands, BenchBusDeliversEveryProduct) {
+  TempDir dir;
+  const Outcome bench = RunCommand(
+      {Executable("avc").string(), "bench", "bus", "--duration", "1", "--rate", "10", "--size",
+       "100000", "--burst", "8", "--compare-duration", "0.5", "--compare-burst", "3", "--json"},
+      dir / "bench.log", std::chrono::seconds(100));
+  ASSERT_EQ(ExitCode(bench.status), 0) << bench.output;
+  const nlohmann::json report = nlohmann::json::parse(LastLine(bench.output), nullptr, false);
+  ASSERT_TRUE(report.is_object()) << bench.output;
+  ASSERT_EQ(report["configs"].size(), 3u);
+  for (const auto& config : report["configs"]) {
+    EXPECT_EQ(config["error"], "") << config["name"];
+    EXPECT_EQ(config["receiver_corrupt"], 0) << config["name"];
+    ASSERT_EQ(config["phases"].size(), 2u);
+    for (const auto& phase : config["phases"]) {
+      EXPECT_GT(phase["sent"].get<int>(), 0) << phase["name"];
+      EXPECT_EQ(phase["delivered"], phase["sent"]) << phase["name"];
+      EXPECT_EQ(phase["acknowledged"], phase["sent"]) << phase["name"];
+      EXPECT_EQ(phase["lost"], 0) << phase["name"];
+      EXPECT_GT(phase["latency_ms_median"].get<double>(), 0) << phase["name"];
+    }
+  }
+}
+
+}  // namespace
+}  // namespace avc
