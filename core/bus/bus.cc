@@ -58,10 +58,10 @@ Bus::Instance& Bus::InstanceFor(Link link) {
 
 void Bus::PublishRaw(Link link, const std::string& full_channel, const void* data, size_t size) {
   if (size > options_.max_message_bytes) {
-    throw BusError(fmt::format(
-        "message on {} is {} bytes, over the bus cap of {} bytes; send it as a product "
-        "(core/products) so it is chunked",
-        full_channel, size, options_.max_message_bytes));
+    throw BusError(
+        fmt::format("message on {} is {} bytes, over the bus cap of {} bytes; send it as a product "
+                    "(core/products) so it is chunked",
+                    full_channel, size, options_.max_message_bytes));
   }
   Instance& instance = InstanceFor(link);
   std::lock_guard lock(publish_mutex_);

@@ -10,11 +10,10 @@
 //    throwing handler is logged and counted and never unwinds through LCM's C frames;
 //  - handle() runs only on the EventLoop thread it is attached to (D13).
 
-#include <lcm/lcm-cpp.hpp>
-
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <lcm/lcm-cpp.hpp>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -103,13 +102,13 @@ class Bus {
   // lives until Unsubscribe or the Bus's end: objects that subscribe and die before the Bus
   // must unsubscribe in their destructor.
   template <class T>
-  SubscriptionId Subscribe(std::string_view name, std::function<void(const T&, const RxInfo&)> handler,
-                 SubscribeOptions options = {}) {
+  SubscriptionId Subscribe(std::string_view name,
+                           std::function<void(const T&, const RxInfo&)> handler,
+                           SubscribeOptions options = {}) {
     const std::string channel = FullChannel(name);
     return SubscribeRegex(
         options.link, std::regex_replace(channel, std::regex(R"([.^$|()\[\]{}*+?\\])"), R"(\$&)"),
-        [this, handler = std::move(handler)](const uint8_t* data, size_t size,
-                                             const RxInfo& info) {
+        [this, handler = std::move(handler)](const uint8_t* data, size_t size, const RxInfo& info) {
           T msg;
           if (msg.decode(data, 0, static_cast<int>(size)) < 0) {
             Reject(info, "does not decode as " + std::string(T::getTypeName()));

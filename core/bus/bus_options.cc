@@ -37,7 +37,8 @@ std::string BusOptions::Validate() const {
     return "cell id '" + cell + "' is invalid: use 1-16 characters of a-z, 0-9, '_' or '-'";
   }
   if (!IsKnownProvider(control_url)) {
-    return "control URL '" + control_url + "' is not an LCM URL (udpm://, memq://, file://, tcpq://)";
+    return "control URL '" + control_url +
+           "' is not an LCM URL (udpm://, memq://, file://, tcpq://)";
   }
   if (!bulk_url.empty() && !IsKnownProvider(bulk_url)) {
     return "bulk URL '" + bulk_url + "' is not an LCM URL (udpm://, memq://, file://, tcpq://)";

@@ -35,11 +35,27 @@ inline constexpr std::string_view kProductBench = "PRODUCT/BENCH";
 // Prefix shared by every product channel.
 inline constexpr std::string_view kProductPrefix = "PRODUCT/";
 
-inline constexpr std::array kAll = {
-    kHeartbeat,      kLog,           kProgress,         kAck,           kConfig,
-    kRunInfo,        kProcessStatus, kRobotState,       kRobotCommand,  kTurntableState,
-    kTurntableCommand, kCaptureRequest, kCamera,        kViewPlan,      kOrchestratorState,
-    kProductAck,     kProductImage,  kProductPreview,   kProductCloud,  kProductMesh,
-    kProductVoxelMap, kProductBench};
+inline constexpr std::array kAll = {kHeartbeat,
+                                    kLog,
+                                    kProgress,
+                                    kAck,
+                                    kConfig,
+                                    kRunInfo,
+                                    kProcessStatus,
+                                    kRobotState,
+                                    kRobotCommand,
+                                    kTurntableState,
+                                    kTurntableCommand,
+                                    kCaptureRequest,
+                                    kCamera,
+                                    kViewPlan,
+                                    kOrchestratorState,
+                                    kProductAck,
+                                    kProductImage,
+                                    kProductPreview,
+                                    kProductCloud,
+                                    kProductMesh,
+                                    kProductVoxelMap,
+                                    kProductBench};
 
 }  // namespace avc::channels

@@ -33,7 +33,8 @@ HeartbeatPublisher::HeartbeatPublisher(Bus& bus, EventLoop& loop, std::string se
       service_(std::move(service)),
       host_(HostName()),
       started_us_(MonotonicMicros()) {
-  timer_ = loop_.AddTimer(period, [this] { PublishNow(); }, /*repeating=*/true);
+  timer_ = loop_.AddTimer(
+      period, [this] { PublishNow(); }, /*repeating=*/true);
   PublishNow();
 }
 

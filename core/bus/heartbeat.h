@@ -4,7 +4,6 @@
 // supervisors, the orchestrator and `avc status` know who is alive and ready.
 
 #include <avc/heartbeat_t.hpp>
-
 #include <string>
 
 #include "core/bus/bus.h"

@@ -31,7 +31,8 @@ enum Stage : int { kStageSetup = 1, kStageChdir = 2, kStageExec = 3 };
 
 std::string ErrnoText(int error) { return std::strerror(error); }
 
-std::map<std::string, std::string> MergedEnvironment(const std::map<std::string, std::string>& extra) {
+std::map<std::string, std::string> MergedEnvironment(
+    const std::map<std::string, std::string>& extra) {
   std::map<std::string, std::string> env;
   for (char** entry = environ; entry != nullptr && *entry != nullptr; ++entry) {
     const std::string text(*entry);
@@ -43,8 +44,7 @@ std::map<std::string, std::string> MergedEnvironment(const std::map<std::string,
   return env;
 }
 
-int OpenOrThrow(const std::string& program, const std::string& path, int flags,
-                const char* what) {
+int OpenOrThrow(const std::string& program, const std::string& path, int flags, const char* what) {
   const int fd = open(path.c_str(), flags | O_CLOEXEC, 0644);
   if (fd < 0) {
     throw std::runtime_error("cannot start '" + program + "': cannot open " + what + " '" + path +
@@ -55,8 +55,7 @@ int OpenOrThrow(const std::string& program, const std::string& path, int flags,
 
 // Runs in the child between fork and exec: async-signal-safe calls only.
 [[noreturn]] void ExecChild(int report_fd, int stdin_fd, int log_fd, const char* working_dir,
-                            const char* exe, char* const* argv, char* const* envp,
-                            pid_t parent) {
+                            const char* exe, char* const* argv, char* const* envp, pid_t parent) {
   auto fail = [report_fd](int stage) {
     const ExecFailure failure{stage, errno};
     [[maybe_unused]] ssize_t n = write(report_fd, &failure, sizeof(failure));
@@ -142,8 +141,9 @@ ChildProcess ChildProcess::Spawn(const SpawnSpec& spec) {
   const pid_t pid = fork();
   if (pid == 0) {
     close(report[0]);
-    ExecChild(report[1], stdin_fd, log_fd, spec.working_dir.empty() ? nullptr : spec.working_dir.c_str(),
-              exe.c_str(), argv.data(), envp.data(), parent);
+    ExecChild(report[1], stdin_fd, log_fd,
+              spec.working_dir.empty() ? nullptr : spec.working_dir.c_str(), exe.c_str(),
+              argv.data(), envp.data(), parent);
   }
   const int fork_error = errno;
   pthread_sigmask(SIG_SETMASK, &previous, nullptr);
@@ -266,7 +266,8 @@ std::string DescribeWaitStatus(int status) {
   };
   if (WIFEXITED(status)) return "exited with code " + std::to_string(WEXITSTATUS(status));
   if (WIFSIGNALED(status)) {
-    return "killed by " + signal_name(WTERMSIG(status)) + (WCOREDUMP(status) ? " (core dumped)" : "");
+    return "killed by " + signal_name(WTERMSIG(status)) +
+           (WCOREDUMP(status) ? " (core dumped)" : "");
   }
   if (WIFSTOPPED(status)) return "stopped by " + signal_name(WSTOPSIG(status));
   return "wait status " + std::to_string(status);

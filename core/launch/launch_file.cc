@@ -24,8 +24,8 @@ namespace fs = std::filesystem;
 using Kind = ConfigValue::Kind;
 
 constexpr std::array kTopLevelKeys = {"log_dir", "env", "process"};
-constexpr std::array kProcessKeys = {"name", "command",      "args",       "host",
-                                     "env",  "restart",      "stop_timeout", "working_dir"};
+constexpr std::array kProcessKeys = {"name", "command", "args",         "host",
+                                     "env",  "restart", "stop_timeout", "working_dir"};
 
 std::string Lower(std::string text) {
   std::transform(text.begin(), text.end(), text.begin(),
@@ -61,9 +61,8 @@ class SchemaReader {
   void CheckKeys(const ConfigValue& table, const std::array<const char*, N>& allowed,
                  const std::string& where) const {
     for (const ConfigEntry& entry : table.entries) {
-      if (std::find_if(allowed.begin(), allowed.end(), [&](const char* key) {
-            return entry.key == key;
-          }) != allowed.end()) {
+      if (std::find_if(allowed.begin(), allowed.end(),
+                       [&](const char* key) { return entry.key == key; }) != allowed.end()) {
         continue;
       }
       std::string hint;
@@ -82,7 +81,8 @@ class SchemaReader {
 
   std::string String(const ConfigEntry& entry, const std::string& what) const {
     if (entry.value.kind != Kind::kString) {
-      Fail(LineOf(entry), fmt::format("{} must be a string, not {}", what, KindName(entry.value.kind)));
+      Fail(LineOf(entry),
+           fmt::format("{} must be a string, not {}", what, KindName(entry.value.kind)));
     }
     return entry.value.text;
   }
@@ -102,10 +102,10 @@ class SchemaReader {
       auto [ptr, error] = std::from_chars(value.text.data(), end, number);
       if (error == std::errc() && ptr == end) return number;
     }
-    Fail(LineOf(entry), fmt::format("{} must be a number, not {}", what,
-                                    value.kind == Kind::kString
-                                        ? "'" + value.text + "'"
-                                        : std::string(KindName(value.kind))));
+    Fail(LineOf(entry),
+         fmt::format("{} must be a number, not {}", what,
+                     value.kind == Kind::kString ? "'" + value.text + "'"
+                                                 : std::string(KindName(value.kind))));
   }
 
   std::vector<std::string> StringList(const ConfigEntry& entry, const std::string& what) const {
@@ -149,9 +149,8 @@ class SchemaReader {
   }
   static bool IsEnvName(const std::string& name) {
     if (name.empty() || std::isdigit(static_cast<unsigned char>(name[0]))) return false;
-    return std::all_of(name.begin(), name.end(), [](unsigned char c) {
-      return std::isalnum(c) || c == '_';
-    });
+    return std::all_of(name.begin(), name.end(),
+                       [](unsigned char c) { return std::isalnum(c) || c == '_'; });
   }
 
   std::string file_;
@@ -168,7 +167,8 @@ std::string Absolute(const fs::path& base, const std::string& path) {
   return (fs::path(path).is_absolute() ? fs::path(path) : base / path).lexically_normal().string();
 }
 
-ProcessSpec ReadProcess(const SchemaReader& reader, const ConfigValue& table, const fs::path& base) {
+ProcessSpec ReadProcess(const SchemaReader& reader, const ConfigValue& table,
+                        const fs::path& base) {
   ProcessSpec process;
   process.line = table.line;
   reader.CheckKeys(table, kProcessKeys, "[[process]]");
@@ -236,7 +236,9 @@ ProcessSpec ReadProcess(const SchemaReader& reader, const ConfigValue& table, co
   return process;
 }
 
-std::string Extension(const std::string& file) { return Lower(fs::path(file).extension().string()); }
+std::string Extension(const std::string& file) {
+  return Lower(fs::path(file).extension().string());
+}
 
 }  // namespace
 
@@ -265,7 +267,8 @@ LaunchSpec ParseLaunchFile(std::string_view text, const std::string& file) {
   }
   const SchemaReader reader(file);
   if (root.kind != Kind::kTable) {
-    reader.Fail(root.line, fmt::format("a launch file is a table of keys, not {}", KindName(root.kind)));
+    reader.Fail(root.line,
+                fmt::format("a launch file is a table of keys, not {}", KindName(root.kind)));
   }
   reader.CheckKeys(root, kTopLevelKeys, "the launch file");
 
@@ -284,8 +287,9 @@ LaunchSpec ParseLaunchFile(std::string_view text, const std::string& file) {
     }
   }
   if (processes == nullptr) {
-    reader.Fail(1, "no processes: add at least one [[process]] table (TOML) or 'process:' list "
-                   "(YAML)");
+    reader.Fail(1,
+                "no processes: add at least one [[process]] table (TOML) or 'process:' list "
+                "(YAML)");
   }
   const int list_line = processes->value.line > 0 ? processes->value.line : processes->line;
   if (processes->value.kind != Kind::kArray) {
@@ -362,7 +366,8 @@ void ResolveCommands(LaunchSpec& spec, const fs::path& bin_dir) {
           spec.file, process.command_line,
           fmt::format("command '{}' of process '{}' was found neither in {} nor in PATH ({})",
                       process.command, process.name,
-                      bin_dir.empty() ? std::string("the avc folder") : bin_dir.string(), path_list));
+                      bin_dir.empty() ? std::string("the avc folder") : bin_dir.string(),
+                      path_list));
     }
     process.command = fs::absolute(found).lexically_normal().string();
   }

@@ -6,9 +6,8 @@
 #include <string.h>
 #include <sys/wait.h>
 
-#include <avc/process_info_t.hpp>
-
 #include <algorithm>
+#include <avc/process_info_t.hpp>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
@@ -89,7 +88,8 @@ Supervisor::Supervisor(LaunchSpec spec, bus::Bus& bus, bus::EventLoop& loop,
     auto process = std::make_unique<Process>();
     process->spec = process_spec;
     process->command_line = CommandLine(process_spec);
-    process->log_file = (std::filesystem::path(spec_.log_dir) / (process_spec.name + ".log")).string();
+    process->log_file =
+        (std::filesystem::path(spec_.log_dir) / (process_spec.name + ".log")).string();
     process->backoff = Backoff(options_.backoff);
     processes_.push_back(std::move(process));
   }
@@ -218,15 +218,16 @@ void Supervisor::HandleExit(Process& process, int wait_status) {
   process.last_signal = WIFSIGNALED(wait_status) ? WTERMSIG(wait_status) : 0;
   process.ended_cleanly = WIFEXITED(wait_status) && WEXITSTATUS(wait_status) == 0;
   const std::string what = DescribeWaitStatus(wait_status);
-  AppendToLog(process.log_file, fmt::format("{} (pid {}) {} after {}", process.spec.name, pid,
-                                            what, Seconds(uptime)));
+  AppendToLog(process.log_file, fmt::format("{} (pid {}) {} after {}", process.spec.name, pid, what,
+                                            Seconds(uptime)));
   if (stopping_) {
     log::Info("{} (pid {}) {}", process.spec.name, pid, what);
     process.state = process_info_t::STATE_EXITED;
     return;
   }
-  const bool restart = process.spec.restart == RestartPolicy::kAlways ||
-                       (process.spec.restart == RestartPolicy::kOnFailure && !process.ended_cleanly);
+  const bool restart =
+      process.spec.restart == RestartPolicy::kAlways ||
+      (process.spec.restart == RestartPolicy::kOnFailure && !process.ended_cleanly);
   if (process.ended_cleanly) {
     log::Info("{} (pid {}) {} after {}", process.spec.name, pid, what, Seconds(uptime));
   } else {

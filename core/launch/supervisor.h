@@ -7,7 +7,6 @@
 // then SIGKILL after stop_timeout).
 
 #include <avc/process_status_t.hpp>
-
 #include <chrono>
 #include <memory>
 #include <string>

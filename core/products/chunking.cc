@@ -30,8 +30,8 @@ size_t ChunkPayloadBytes(size_t max_message_bytes, const Product& product) {
   empty.size = 0;
   const size_t overhead = static_cast<size_t>(empty.getEncodedSize()) + kHeaderReserve;
   if (max_message_bytes <= overhead + 1024) {
-    throw std::invalid_argument(
-        fmt::format("message cap {} is too small for product '{}'", max_message_bytes, product.name));
+    throw std::invalid_argument(fmt::format("message cap {} is too small for product '{}'",
+                                            max_message_bytes, product.name));
   }
   return max_message_bytes - overhead;
 }
@@ -100,8 +100,8 @@ Reassembler::Outcome Reassembler::Add(const avc::product_chunk_t& chunk) {
 
   auto it = pending_.find(chunk.product_id);
   if (it == pending_.end()) {
-    while (!pending_.empty() && pending_bytes_ + static_cast<size_t>(chunk.total_size) >
-                                    max_pending_bytes_) {
+    while (!pending_.empty() &&
+           pending_bytes_ + static_cast<size_t>(chunk.total_size) > max_pending_bytes_) {
       EvictOldestPending();
     }
     Pending fresh;
@@ -144,8 +144,8 @@ Reassembler::Outcome Reassembler::Add(const avc::product_chunk_t& chunk) {
   pending_.erase(it);
   if (Sha256Hex(product.payload) != product.sha256) {
     outcome.status = Status::kCorrupt;
-    outcome.error = fmt::format("product '{}' ({}): sha256 mismatch after reassembly",
-                                product.name, product.product_id);
+    outcome.error = fmt::format("product '{}' ({}): sha256 mismatch after reassembly", product.name,
+                                product.product_id);
     return outcome;
   }
   RememberCompleted(product.product_id);
@@ -183,9 +183,9 @@ void Reassembler::RememberCompleted(const std::string& product_id) {
 }
 
 void Reassembler::EvictOldestPending() {
-  auto oldest = std::min_element(pending_.begin(), pending_.end(), [](const auto& a, const auto& b) {
-    return a.second.arrival < b.second.arrival;
-  });
+  auto oldest = std::min_element(
+      pending_.begin(), pending_.end(),
+      [](const auto& a, const auto& b) { return a.second.arrival < b.second.arrival; });
   pending_bytes_ -= oldest->second.product.payload.size();
   pending_.erase(oldest);
 }

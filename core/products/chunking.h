@@ -4,7 +4,6 @@
 // no bus, no clock, so it is unit-tested on its own.
 
 #include <avc/product_chunk_t.hpp>
-
 #include <cstdint>
 #include <deque>
 #include <map>

@@ -1,9 +1,9 @@
 #include "core/products/point_cloud_ply.h"
 
-#include <avc/point_field_t.hpp>
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <avc/point_field_t.hpp>
 #include <stdexcept>
 #include <vector>
 
@@ -44,34 +44,35 @@ std::string PointCloudToPly(const avc::point_cloud_t& cloud) {
   if (cloud.num_points < 0 || cloud.point_step <= 0 ||
       static_cast<int64_t>(cloud.num_points) * cloud.point_step != cloud.data_size ||
       cloud.data_size != static_cast<int32_t>(cloud.data.size())) {
-    throw std::invalid_argument(fmt::format(
-        "point cloud '{}': {} points x {} bytes does not match {} data bytes", cloud.cloud_id,
-        cloud.num_points, cloud.point_step, cloud.data.size()));
+    throw std::invalid_argument(
+        fmt::format("point cloud '{}': {} points x {} bytes does not match {} data bytes",
+                    cloud.cloud_id, cloud.num_points, cloud.point_step, cloud.data.size()));
   }
   std::vector<avc::point_field_t> fields = cloud.fields;
   std::sort(fields.begin(), fields.end(),
             [](const auto& a, const auto& b) { return a.offset < b.offset; });
-  std::string header = fmt::format("ply\nformat binary_little_endian 1.0\ncomment {}\nelement vertex {}\n",
-                                   cloud.frame.empty() ? "frame world" : "frame " + cloud.frame,
-                                   cloud.num_points);
+  std::string header =
+      fmt::format("ply\nformat binary_little_endian 1.0\ncomment {}\nelement vertex {}\n",
+                  cloud.frame.empty() ? "frame world" : "frame " + cloud.frame, cloud.num_points);
   int32_t position = 0;
   int padding = 0;
   auto pad_to = [&](int32_t offset) {
-    for (; position < offset; ++position) header += fmt::format("property uchar pad{}\n", padding++);
+    for (; position < offset; ++position)
+      header += fmt::format("property uchar pad{}\n", padding++);
   };
   for (const avc::point_field_t& field : fields) {
     const PlyType type = ToPlyType(field.datatype);
     if (field.offset < position || field.count < 1 ||
         field.offset + field.count * type.bytes > cloud.point_step) {
-      throw std::invalid_argument(fmt::format("point cloud '{}': field '{}' overlaps another or "
-                                              "leaves the {}-byte record",
-                                              cloud.cloud_id, field.name, cloud.point_step));
+      throw std::invalid_argument(
+          fmt::format("point cloud '{}': field '{}' overlaps another or "
+                      "leaves the {}-byte record",
+                      cloud.cloud_id, field.name, cloud.point_step));
     }
     pad_to(field.offset);
     for (int32_t i = 0; i < field.count; ++i) {
-      header += field.count == 1
-                    ? fmt::format("property {} {}\n", type.name, field.name)
-                    : fmt::format("property {} {}{}\n", type.name, field.name, i);
+      header += field.count == 1 ? fmt::format("property {} {}\n", type.name, field.name)
+                                 : fmt::format("property {} {}{}\n", type.name, field.name, i);
     }
     position = field.offset + field.count * type.bytes;
   }

@@ -1,7 +1,6 @@
 #pragma once
 
 #include <avc/point_cloud_t.hpp>
-
 #include <string>
 
 namespace avc::products {

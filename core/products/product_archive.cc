@@ -1,13 +1,13 @@
 #include "core/products/product_archive.h"
 
+#include <fmt/format.h>
+
 #include <avc/image_t.hpp>
 #include <avc/mesh_t.hpp>
 #include <avc/point_cloud_t.hpp>
 #include <avc/voxel_map_t.hpp>
-#include <fmt/format.h>
-#include <nlohmann/json.hpp>
-
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 
 #include "core/products/point_cloud_ply.h"
@@ -20,8 +20,8 @@ template <class T>
 T DecodeAs(const Product& product) {
   T msg;
   if (msg.decode(product.payload.data(), 0, static_cast<int>(product.payload.size())) < 0) {
-    throw std::invalid_argument(fmt::format("product '{}' does not decode as {}", product.name,
-                                            product.content_type));
+    throw std::invalid_argument(
+        fmt::format("product '{}' does not decode as {}", product.name, product.content_type));
   }
   return msg;
 }
@@ -42,7 +42,9 @@ std::filesystem::path WithExtension(std::filesystem::path path, const char* exte
   return path;
 }
 
-std::string Bytes(const std::vector<uint8_t>& data) { return std::string(data.begin(), data.end()); }
+std::string Bytes(const std::vector<uint8_t>& data) {
+  return std::string(data.begin(), data.end());
+}
 
 StoredFile ImageFile(const std::filesystem::path& path, const avc::image_t& image) {
   switch (image.encoding) {
@@ -82,9 +84,9 @@ StoredFile ToStoredFile(const Product& product) {
     return {WithExtension(path, ".ply"), Bytes(DecodeAs<avc::mesh_t>(product).data)};
   } else if (product.content_type == "avc.voxel_map_t") {
     const avc::voxel_map_t map = DecodeAs<avc::voxel_map_t>(product);
-    return {WithExtension(path, map.encoding == avc::voxel_map_t::ENCODING_OCTOMAP_OT ? ".ot"
-                                                                                      : ".bt"),
-            Bytes(map.data)};
+    return {
+        WithExtension(path, map.encoding == avc::voxel_map_t::ENCODING_OCTOMAP_OT ? ".ot" : ".bt"),
+        Bytes(map.data)};
   } else if (product.content_type == "avc.point_cloud_t") {
     return {WithExtension(path, ".ply"), PointCloudToPly(DecodeAs<avc::point_cloud_t>(product))};
   }
@@ -118,12 +120,9 @@ void ProductArchive::Store(const Product& product) {
     if (!out) throw std::runtime_error("cannot write " + partial.string());
   }
   std::filesystem::rename(partial, target);
-  nlohmann::json line = {{"file", file.relative_path.string()},
-                         {"name", product.name},
-                         {"content_type", product.content_type},
-                         {"sha256", product.sha256},
-                         {"bytes", product.payload.size()},
-                         {"source", product.source}};
+  nlohmann::json line = {{"file", file.relative_path.string()},  {"name", product.name},
+                         {"content_type", product.content_type}, {"sha256", product.sha256},
+                         {"bytes", product.payload.size()},      {"source", product.source}};
   std::ofstream manifest(dir_ / "manifest.jsonl", std::ios::app);
   manifest << line.dump() << "\n";
   if (!manifest) throw std::runtime_error("cannot append to " + (dir_ / "manifest.jsonl").string());

@@ -54,7 +54,8 @@ ProductSender::ProductSender(bus::Bus& bus, bus::EventLoop& loop, SenderOptions 
   ack_subscription_ = bus_.Subscribe<avc::product_ack_t>(
       channels::kProductAck,
       [this](const avc::product_ack_t& ack, const bus::RxInfo&) { OnAck(ack); });
-  timeout_timer_ = loop_.AddTimer(kTimeoutCheckPeriod, [this] { CheckTimeouts(); }, true);
+  timeout_timer_ = loop_.AddTimer(
+      kTimeoutCheckPeriod, [this] { CheckTimeouts(); }, true);
   last_refill_us_ = MonotonicMicros();
   tokens_ = static_cast<double>(bus_.options().max_message_bytes);
 }
@@ -84,7 +85,8 @@ std::string ProductSender::Send(std::string_view channel, std::string name,
   outgoing->timeout = options_.initial_timeout;
   {
     std::lock_guard lock(queue_mutex_);
-    product.product_id = fmt::format("{}/{}/{}", bus_.options().source, incarnation_, next_number_++);
+    product.product_id =
+        fmt::format("{}/{}/{}", bus_.options().source, incarnation_, next_number_++);
     if (chunk_payload_bytes_ == 0) {
       chunk_payload_bytes_ = ChunkPayloadBytes(bus_.options().max_message_bytes, product);
     }
@@ -151,7 +153,8 @@ void ProductSender::TransmitQueued() {
     if (tokens_ < 0) {
       if (!pump_scheduled_) {
         pump_scheduled_ = true;
-        const auto wait = std::chrono::microseconds(static_cast<int64_t>(-tokens_ / rate * 1e6) + 1);
+        const auto wait =
+            std::chrono::microseconds(static_cast<int64_t>(-tokens_ / rate * 1e6) + 1);
         pump_timer_ = loop_.AddTimer(wait, [this] { Pump(); });
       }
       return;
@@ -277,8 +280,8 @@ void ProductSender::CheckTimeouts() {
       failed.push_back(id);
       continue;
     }
-    outgoing->timeout = std::min<std::chrono::microseconds>(2 * outgoing->timeout,
-                                                            options_.max_timeout);
+    outgoing->timeout =
+        std::min<std::chrono::microseconds>(2 * outgoing->timeout, options_.max_timeout);
     StartRound(*outgoing, ChunksStillNeeded(*outgoing));
   }
   for (const std::string& id : failed) {

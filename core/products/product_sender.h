@@ -4,19 +4,18 @@
 // unacknowledged bytes; resends what receivers report missing, and everything unacknowledged
 // after a timeout that doubles per attempt; gives up after max_attempts with a clear error.
 
-#include <chrono>
 #include <atomic>
+#include <avc/product_ack_t.hpp>
+#include <chrono>
 #include <cstdint>
 #include <deque>
-#include <memory>
-#include <mutex>
 #include <functional>
 #include <map>
+#include <memory>
+#include <mutex>
 #include <set>
 #include <string>
 #include <vector>
-
-#include <avc/product_ack_t.hpp>
 
 #include "core/bus/bus.h"
 #include "core/bus/event_loop.h"
@@ -74,8 +73,7 @@ class ProductSender {
                           DoneCallback done = {}) {
     std::vector<uint8_t> payload(static_cast<size_t>(msg.getEncodedSize()));
     msg.encode(payload.data(), 0, static_cast<int>(payload.size()));
-    return Send(channel, std::move(name), ContentTypeOf<T>(), std::move(payload),
-                std::move(done));
+    return Send(channel, std::move(name), ContentTypeOf<T>(), std::move(payload), std::move(done));
   }
 
   // Products queued or awaiting acknowledgement. Safe from any thread.

@@ -21,8 +21,8 @@ const NodeRegistry::Entry& NodeRegistry::Get(const std::string& name) const {
   if (it != entries_.end()) return it->second;
   std::string known;
   for (const auto& [key, entry] : entries_) known += (known.empty() ? "" : ", ") + key;
-  throw std::invalid_argument("unknown replay node '" + name + "' (known: " +
-                              (known.empty() ? "none" : known) + ")");
+  throw std::invalid_argument("unknown replay node '" + name +
+                              "' (known: " + (known.empty() ? "none" : known) + ")");
 }
 
 std::vector<const NodeRegistry::Entry*> NodeRegistry::List() const {

@@ -1,11 +1,11 @@
 #include "core/record/recorder.h"
 
-#include <avc/product_chunk_t.hpp>
-#include <avc/run_info_t.hpp>
 #include <fcntl.h>
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <avc/product_chunk_t.hpp>
+#include <avc/run_info_t.hpp>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -26,9 +26,10 @@ void CreateExclusively(const std::filesystem::path& path) {
     return;
   }
   if (errno == EEXIST) {
-    throw RecordError(fmt::format("{} already exists; refusing to overwrite it (choose a new "
-                                  "output file)",
-                                  path.string()));
+    throw RecordError(
+        fmt::format("{} already exists; refusing to overwrite it (choose a new "
+                    "output file)",
+                    path.string()));
   }
   throw RecordError(fmt::format("cannot create {}: {}", path.string(), std::strerror(errno)));
 }
@@ -78,7 +79,8 @@ Recorder::Recorder(bus::Bus& bus, bus::EventLoop& loop, RecorderOptions options)
                                         product.name, options_.output.string()));
         }
       });
-  flush_timer_ = loop_.AddTimer(options_.flush_interval, [this] { Flush(); }, /*repeating=*/true);
+  flush_timer_ = loop_.AddTimer(
+      options_.flush_interval, [this] { Flush(); }, /*repeating=*/true);
 }
 
 Recorder::~Recorder() { Stop(); }
@@ -92,8 +94,8 @@ void Recorder::WriteRunInfo() {
   info.version = std::string(Version());
   info.command_line = options_.command_line;
   info.control_url = bus_.options().control_url;
-  info.bulk_url = HasSeparateBulk(bus_.options()) ? bus_.options().bulk_url
-                                                  : bus_.options().control_url;
+  info.bulk_url =
+      HasSeparateBulk(bus_.options()) ? bus_.options().bulk_url : bus_.options().control_url;
   info.hosts = {HostName()};
   info.num_hosts = static_cast<int32_t>(info.hosts.size());
   info.config_format = options_.config_format;
@@ -106,8 +108,7 @@ void Recorder::WriteRunInfo() {
   }
 }
 
-void Recorder::Write(const std::string& channel, int64_t utime, const uint8_t* data,
-                     size_t size) {
+void Recorder::Write(const std::string& channel, int64_t utime, const uint8_t* data, size_t size) {
   if (!file_) return;
   lcm::LogEvent event{};
   event.timestamp = utime;

@@ -9,11 +9,10 @@
 // so LCM hands each chunk to it before the receiver sees it: a product is acknowledged by
 // "recorder" only once its chunks are in the log.
 
-#include <lcm/lcm-cpp.hpp>
-
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
+#include <lcm/lcm-cpp.hpp>
 #include <memory>
 #include <set>
 #include <stdexcept>

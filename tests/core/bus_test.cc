@@ -2,10 +2,11 @@
 
 #include "core/bus/bus.h"
 
+#include <gtest/gtest.h>
+
 #include <avc/ack_t.hpp>
 #include <avc/heartbeat_t.hpp>
 #include <avc/log_text_t.hpp>
-#include <gtest/gtest.h>
 
 #include "core/bus/channels.h"
 #include "core/bus/heartbeat.h"
@@ -111,8 +112,8 @@ TEST(Bus, InjectedLossIsSeededAndCounted) {
     Bus bus(InProcessBusOptions());
     bus.InjectReceiveLoss(".*/ACK", 0.5, seed);
     std::vector<int64_t> seqs;
-    bus.Subscribe<avc::ack_t>(channels::kAck,
-                              [&](const avc::ack_t& a, const RxInfo&) { seqs.push_back(a.header.seq); });
+    bus.Subscribe<avc::ack_t>(
+        channels::kAck, [&](const avc::ack_t& a, const RxInfo&) { seqs.push_back(a.header.seq); });
     avc::ack_t ack{};
     for (int i = 0; i < 200; ++i) bus.Publish(channels::kAck, ack);
     bus.DispatchPending();
@@ -131,8 +132,8 @@ TEST(Bus, HeartbeatPublishesOnStateChangeAndPeriodically) {
   EventLoop loop;
   bus.AttachTo(loop);
   std::vector<avc::heartbeat_t> beats;
-  bus.Subscribe<avc::heartbeat_t>(channels::kHeartbeat,
-                                  [&](const avc::heartbeat_t& b, const RxInfo&) { beats.push_back(b); });
+  bus.Subscribe<avc::heartbeat_t>(
+      channels::kHeartbeat, [&](const avc::heartbeat_t& b, const RxInfo&) { beats.push_back(b); });
   HeartbeatPublisher heartbeat(bus, loop, "svc", std::chrono::milliseconds(20));
   ASSERT_TRUE(loop.RunUntil([&] { return beats.size() == 1; }, std::chrono::seconds(2)));
   EXPECT_EQ(beats[0].state, avc::heartbeat_t::STATE_STARTING);

@@ -48,7 +48,9 @@ TEST(EventLoop, CancelledTimerNeverRuns) {
 
 TEST(EventLoop, RejectsZeroPeriodRepeatingTimer) {
   EventLoop loop;
-  EXPECT_THROW(loop.AddTimer(milliseconds(0), [] {}, true), std::invalid_argument);
+  EXPECT_THROW(loop.AddTimer(
+                   milliseconds(0), [] {}, true),
+               std::invalid_argument);
 }
 
 TEST(EventLoop, PostFromAnotherThreadRunsOnLoopThread) {

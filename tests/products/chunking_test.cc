@@ -36,7 +36,8 @@ TEST(Chunking, EveryEncodedChunkFitsTheCapWithRoomForTheHeader) {
 }
 
 TEST(Chunking, SizesCoverThePayloadExactly) {
-  for (size_t size : {size_t{0}, size_t{1}, size_t{5000}, ChunkPayloadBytes(kCap, MakeProduct(1)) * 3}) {
+  for (size_t size :
+       {size_t{0}, size_t{1}, size_t{5000}, ChunkPayloadBytes(kCap, MakeProduct(1)) * 3}) {
     const Product product = MakeProduct(size);
     const auto chunks = SplitIntoChunks(product, kCap);
     int64_t covered = 0;

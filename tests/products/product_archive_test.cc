@@ -1,8 +1,9 @@
 #include "core/products/product_archive.h"
 
+#include <gtest/gtest.h>
+
 #include <avc/image_t.hpp>
 #include <avc/mesh_t.hpp>
-#include <gtest/gtest.h>
 
 #include "core/bus/channels.h"
 #include "core/products/product_sender.h"
@@ -54,8 +55,7 @@ TEST(ProductArchive, StoredFilesAreWhatPeopleCanOpen) {
 TEST(ProductArchive, NamesThatLeaveTheArchiveAndUndecodablePayloadsAreRefused) {
   avc::mesh_t mesh{};
   EXPECT_THROW(ToStoredFile(FromMessage("../evil", mesh, "avc.mesh_t")), std::invalid_argument);
-  EXPECT_THROW(ToStoredFile(FromMessage("/etc/passwd", mesh, "avc.mesh_t")),
-               std::invalid_argument);
+  EXPECT_THROW(ToStoredFile(FromMessage("/etc/passwd", mesh, "avc.mesh_t")), std::invalid_argument);
   EXPECT_THROW(ToStoredFile(FromMessage("", mesh, "avc.mesh_t")), std::invalid_argument);
   Product junk;
   junk.name = "x";

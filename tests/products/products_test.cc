@@ -158,7 +158,8 @@ TEST(Products, WindowBoundsBytesInFlight) {
 
 TEST(Products, PacingLimitsTheSendRate) {
   Harness h(1'000'000);
-  ProductReceiver receiver(h.bus, "consumer", "PRODUCT/IMAGE", [](const Product&, const bus::RxInfo&) {});
+  ProductReceiver receiver(h.bus, "consumer", "PRODUCT/IMAGE",
+                           [](const Product&, const bus::RxInfo&) {});
   SenderOptions options = FastOptions();
   options.max_bytes_per_second = 20e6;
   ProductSender sender(h.bus, h.loop, options);
