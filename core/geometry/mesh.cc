@@ -1,8 +1,8 @@
 #include "core/geometry/mesh.h"
 
-#include <Eigen/Geometry>
 #include <fmt/format.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
 
 namespace avc::geometry {

@@ -9,6 +9,9 @@
 
 namespace avc::sim {
 
+// kLeaf: blade colour, veins and speckle from leaf uvs; kStem: streaks along the stem; kPot: mild
+// mottling; kSoil: granular; kPlain: base_rgb with noise of amplitude variation (0: exactly
+// base_rgb).
 enum class MaterialKind { kLeaf, kStem, kPot, kSoil, kPlain };
 
 // How a leaf's veins run: lateral veins off the midrib (dicots), veins parallel to the midrib

@@ -31,8 +31,8 @@ void RegisterBench(CLI::App& root, int* exit_code) {
   auto args = std::make_shared<BenchArgs>();
   CLI::App* command = root.add_subcommand(
       "bench",
-      "avc bench [--list] NAME [BENCHMARK OPTIONS]\n"
       "Run a benchmark: our method against its baselines on the same input, in one run.\n"
+      "Usage: avc bench [--list] NAME [BENCHMARK OPTIONS]\n"
       "Arguments after NAME go to the benchmark ('avc bench NAME --help' lists them).\n"
       "Results are printed as a table; --json adds one JSON line. Figures: BENCHMARKS.md.");
   command->add_flag("--list", args->list, "list the benchmarks and exit");

@@ -9,6 +9,7 @@
 #include "core/products/product_archive.h"
 #include "tools/avc/bus_flags.h"
 #include "tools/avc/commands.h"
+#include "tools/avc/run_guarded.h"
 
 namespace avc::cli {
 namespace {
@@ -52,7 +53,7 @@ void RegisterCollect(CLI::App& root, int* exit_code) {
                    "name in acknowledgements (producers may require it)")
       ->capture_default_str();
   AddBusFlags(command, &options->bus);
-  command->callback([options, exit_code] { *exit_code = RunCollect(*options); });
+  SetGuardedRun(command, exit_code, [options] { return RunCollect(*options); });
 }
 
 }  // namespace avc::cli

@@ -18,6 +18,7 @@
 #include "core/util/log.h"
 #include "tools/avc/bus_flags.h"
 #include "tools/avc/commands.h"
+#include "tools/avc/run_guarded.h"
 
 namespace avc::cli {
 namespace {
@@ -173,14 +174,7 @@ void RegisterRecord(CLI::App& root, int* exit_code) {
       ->capture_default_str()
       ->check(CLI::Range(1, 60'000));
   AddBusFlags(command, &args->bus);
-  command->callback([args, exit_code] {
-    try {
-      *exit_code = RunRecord(*args);
-    } catch (const std::exception& e) {
-      std::cerr << "avc record: " << e.what() << "\n";
-      *exit_code = 1;
-    }
-  });
+  SetGuardedRun(command, exit_code, [args] { return RunRecord(*args); });
 }
 
 }  // namespace avc::cli

@@ -9,6 +9,7 @@
 #include "core/record/replay.h"
 #include "core/util/log.h"
 #include "tools/avc/commands.h"
+#include "tools/avc/run_guarded.h"
 
 namespace avc::cli {
 namespace {
@@ -28,10 +29,10 @@ void PrintNodes(const record::NodeRegistry& registry) {
 }
 
 void PrintSummary(const record::ReplaySummary& summary, const std::string& log) {
-  std::cout << fmt::format("replayed {} events ({:.1f} MB, {:.1f} s of log time) of cell {} from {}\n",
-                           summary.events, static_cast<double>(summary.bytes) / 1e6,
-                           static_cast<double>(summary.last_utime - summary.first_utime) / 1e6,
-                           summary.cell, log);
+  std::cout << fmt::format(
+      "replayed {} events ({:.1f} MB, {:.1f} s of log time) of cell {} from {}\n", summary.events,
+      static_cast<double>(summary.bytes) / 1e6,
+      static_cast<double>(summary.last_utime - summary.first_utime) / 1e6, summary.cell, log);
   for (const record::NodeOutput& node : summary.nodes) {
     std::cout << fmt::format("node {}: {}\n", node.name, node.description);
     for (const std::filesystem::path& file : node.files) std::cout << "  " << file.string() << "\n";
@@ -85,14 +86,7 @@ void RegisterReplay(CLI::App& root, int* exit_code) {
   command->add_flag("--list-nodes", args->list_nodes, "list the replayable nodes and exit");
   command->add_option("--cell", args->cell,
                       "cell whose channels the nodes listen to (default: from the log's RUN_INFO)");
-  command->callback([args, exit_code] {
-    try {
-      *exit_code = RunReplay(*args);
-    } catch (const std::exception& e) {
-      std::cerr << "avc replay: " << e.what() << "\n";
-      *exit_code = 1;
-    }
-  });
+  SetGuardedRun(command, exit_code, [args] { return RunReplay(*args); });
 }
 
 }  // namespace avc::cli

@@ -16,6 +16,7 @@
 #include "core/launch/find_program.h"
 #include "tools/avc/bus_flags.h"
 #include "tools/avc/commands.h"
+#include "tools/avc/run_guarded.h"
 
 namespace avc::cli {
 namespace {
@@ -92,21 +93,15 @@ void RegisterSpy(CLI::App& root, int* exit_code) {
   auto args = std::make_shared<SpyArgs>();
   CLI::App* command = root.add_subcommand(
       "spy",
-      "Open lcm-spy on the cell's control bus (or --bulk) with AVC's message types, so every\n"
-      "channel is decoded. Needs a display (X11).");
+      "Open lcm-spy on the cell's bus with AVC's message types.\n"
+      "Watches the control URL (or --bulk) with the project's types jar on the class path, so\n"
+      "every channel is decoded. Needs a display (X11).");
   command->add_flag("--bulk", args->bulk, "watch the bulk URL (products) instead of control");
   command->add_option("--jar", args->jar,
                       "message types jar (default: the build's avc-lcmtypes.jar)");
   command->add_flag("--dry-run", args->dry_run, "print the command instead of running it");
   AddBusFlags(command, &args->bus);
-  command->callback([args, exit_code] {
-    try {
-      *exit_code = RunSpy(*args);
-    } catch (const std::exception& e) {
-      std::cerr << "avc spy: " << e.what() << "\n";
-      *exit_code = 1;
-    }
-  });
+  SetGuardedRun(command, exit_code, [args] { return RunSpy(*args); });
 }
 
 }  // namespace avc::cli

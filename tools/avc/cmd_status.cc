@@ -16,6 +16,7 @@
 #include "core/util/clock.h"
 #include "tools/avc/bus_flags.h"
 #include "tools/avc/commands.h"
+#include "tools/avc/run_guarded.h"
 
 namespace avc::cli {
 namespace {
@@ -135,8 +136,9 @@ void RegisterStatus(CLI::App& root, int* exit_code) {
   auto args = std::make_shared<StatusArgs>();
   CLI::App* command = root.add_subcommand(
       "status",
-      "List the live processes of the cell from their heartbeats: service, host, pid, state,\n"
-      "age of the last heartbeat, detail; and the processes each 'avc up' supervises.\n"
+      "List the live processes of the cell from their heartbeats.\n"
+      "Per process: service, host, pid, state, age of the last heartbeat, detail; and the\n"
+      "processes each 'avc up' supervises.\n"
       "Exit code 1 when nobody was heard.");
   command->add_option("--listen", args->listen_s, "seconds to listen before printing")
       ->capture_default_str()
@@ -145,14 +147,7 @@ void RegisterStatus(CLI::App& root, int* exit_code) {
   command->add_flag("--all-cells", args->all_cells, "every cell on the network, not only --cell");
   command->add_flag("--json", args->json, "one JSON document per refresh instead of a table");
   AddBusFlags(command, &args->bus);
-  command->callback([args, exit_code] {
-    try {
-      *exit_code = RunStatus(*args);
-    } catch (const std::exception& e) {
-      std::cerr << "avc status: " << e.what() << "\n";
-      *exit_code = 1;
-    }
-  });
+  SetGuardedRun(command, exit_code, [args] { return RunStatus(*args); });
 }
 
 }  // namespace avc::cli

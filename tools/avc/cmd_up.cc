@@ -14,6 +14,7 @@
 #include "core/util/log.h"
 #include "tools/avc/bus_flags.h"
 #include "tools/avc/commands.h"
+#include "tools/avc/run_guarded.h"
 
 namespace avc::cli {
 namespace {
@@ -122,14 +123,7 @@ void RegisterUp(CLI::App& root, int* exit_code) {
                       "folder for the process logs (default: log_dir of the launch file)");
   AddBusFlags(command, &args->bus);
   command->footer(kUpExample);
-  command->callback([args, exit_code] {
-    try {
-      *exit_code = RunUp(*args);
-    } catch (const std::exception& e) {
-      std::cerr << "avc up: " << e.what() << "\n";
-      *exit_code = 1;
-    }
-  });
+  SetGuardedRun(command, exit_code, [args] { return RunUp(*args); });
 }
 
 }  // namespace avc::cli

@@ -15,5 +15,8 @@ void RegisterUp(CLI::App& root, int* exit_code);
 void RegisterBench(CLI::App& root, int* exit_code);
 void RegisterStatus(CLI::App& root, int* exit_code);
 void RegisterSpy(CLI::App& root, int* exit_code);
+void RegisterSim(CLI::App& root, int* exit_code);
+void RegisterEval(CLI::App& root, int* exit_code);
+void RegisterTurntable(CLI::App& root, int* exit_code);
 
 }  // namespace avc::cli

@@ -1,11 +1,30 @@
 // avc: the one command-line tool of the Active Vision Cell.
 
 #include <CLI/CLI.hpp>
-
 #include <iostream>
 
 #include "core/util/log.h"
 #include "tools/avc/commands.h"
+
+namespace {
+
+// A command's listing in its parent's help shows the first line of its description; the rest
+// moves to the top of its own footer, so 'avc --help' stays one line per command while
+// 'avc COMMAND --help' keeps every word.
+void ShortenListings(CLI::App& app) {
+  for (CLI::App* command : app.get_subcommands({})) {
+    const std::string description = command->get_description();
+    const size_t newline = description.find('\n');
+    if (newline != std::string::npos) {
+      const std::string footer = command->get_footer();
+      command->description(description.substr(0, newline));
+      command->footer(description.substr(newline + 1) + (footer.empty() ? "" : "\n" + footer));
+    }
+    ShortenListings(*command);
+  }
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   avc::log::SetProcessName("avc");
@@ -22,7 +41,11 @@ int main(int argc, char** argv) {
   avc::cli::RegisterUp(app, &exit_code);
   avc::cli::RegisterStatus(app, &exit_code);
   avc::cli::RegisterSpy(app, &exit_code);
+  avc::cli::RegisterSim(app, &exit_code);
   avc::cli::RegisterBench(app, &exit_code);
+  avc::cli::RegisterEval(app, &exit_code);
+  avc::cli::RegisterTurntable(app, &exit_code);
+  ShortenListings(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,79 @@
+#include "sim/cell/view_selection.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "core/kinematics/inverse_kinematics.h"
+
+namespace avc::sim {
+namespace {
+
+constexpr double kMinimumViewDistance = 1e-6;
+
+}  // namespace
+
+Eigen::Isometry3d LookAtPose(const Eigen::Vector3d& camera_centre_table,
+                             const Eigen::Vector3d& target_table,
+                             const Eigen::Vector3d& robot_base_table) {
+  if (!camera_centre_table.allFinite() || !target_table.allFinite() ||
+      !robot_base_table.allFinite()) {
+    throw std::invalid_argument("LookAtPose: a point is not finite");
+  }
+  const Eigen::Vector3d forward = target_table - camera_centre_table;
+  if (forward.norm() < kMinimumViewDistance) {
+    throw std::invalid_argument("LookAtPose: the target coincides with the camera centre");
+  }
+  const Eigen::Vector3d z = forward.normalized();
+  // x = down x z keeps image down as close to table down as the viewing direction allows.
+  Eigen::Vector3d x = (-Eigen::Vector3d::UnitZ()).cross(z);
+  if (x.norm() < 1e-9) {
+    // Vertical view: image down points horizontally away from the robot.
+    Eigen::Vector3d away = camera_centre_table - robot_base_table;
+    away.z() = 0;
+    if (away.norm() < 1e-9) away = Eigen::Vector3d::UnitX();
+    x = away.normalized().cross(z);
+  }
+  x.normalize();
+  const Eigen::Vector3d y = z.cross(x);
+  Eigen::Isometry3d T_table_cam = Eigen::Isometry3d::Identity();
+  T_table_cam.linear() << x, y, z;
+  T_table_cam.translation() = camera_centre_table;
+  return T_table_cam;
+}
+
+std::optional<kinematics::JointVector> JointsLookingAt(const CellTruth& cell,
+                                                       const Eigen::Vector3d& camera_centre_table,
+                                                       const Eigen::Vector3d& target_table,
+                                                       const kinematics::JointVector& current) {
+  if (std::string error = cell.Validate(); !error.empty()) {
+    throw std::invalid_argument("JointsLookingAt: invalid cell: " + error);
+  }
+  if (!current.allFinite()) {
+    throw std::invalid_argument("JointsLookingAt: the current joints are not finite");
+  }
+  const Eigen::Isometry3d T_table_base = cell.T_base_table.inverse();
+  const Eigen::Isometry3d T_table_cam =
+      LookAtPose(camera_centre_table, target_table, T_table_base.translation());
+  const Eigen::Isometry3d T_base_flange =
+      cell.T_base_table * T_table_cam * cell.T_flange_cam.inverse();
+  // At a wrist singularity joint 6 is free: keep it where it is.
+  const std::vector<kinematics::JointVector> solutions = kinematics::InverseKinematicsRefined(
+      cell.dh, T_base_flange, kinematics::WrapAngle(current[5]));
+  return kinematics::ClosestSolution(solutions, current);
+}
+
+Eigen::Vector3d ViewpointOnSphere(const Eigen::Vector3d& target, double distance, double elevation,
+                                  double azimuth) {
+  return target + distance * Eigen::Vector3d(std::cos(elevation) * std::cos(azimuth),
+                                             std::cos(elevation) * std::sin(azimuth),
+                                             std::sin(elevation));
+}
+
+double RobotAzimuth(const CellTruth& cell) {
+  const Eigen::Vector3d base =
+      cell.T_base_table.inverse().translation() - cell.turntable_centre_table;
+  return std::atan2(base.y(), base.x());
+}
+
+}  // namespace avc::sim

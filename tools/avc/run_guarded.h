@@ -1,0 +1,14 @@
+#pragma once
+
+// The one way a subcommand runs: its callback stores run()'s exit code in *exit_code, and an
+// exception becomes "avc NAME: message" on stderr with exit code 1, so bad input never crashes
+// the CLI.
+
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace avc::cli {
+
+void SetGuardedRun(CLI::App* command, int* exit_code, std::function<int()> run);
+
+}  // namespace avc::cli
