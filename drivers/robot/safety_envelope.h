@@ -1,0 +1,58 @@
+#pragma once
+
+// Where the arm may go: joint limits, a table plane the links stay above, a keep-out cylinder
+// around the plant, and speed/acceleration caps. Moves are checked along their whole path
+// (sampled): movej's straight joint-space line, movel's straight tool line through nominal IK.
+// Pure geometry on the nominal kinematics; no LCM, no sockets.
+
+#include <Eigen/Geometry>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/kinematics/dh_parameters.h"
+
+namespace avc::robot {
+
+using kinematics::JointVector;
+
+struct KeepOutCylinder {
+  Eigen::Vector2d centre_base = Eigen::Vector2d::Zero();  // vertical axis through (x, y), base
+  double radius_m = 0;
+  double z_min_m = 0;  // base z range the cylinder spans
+  double z_max_m = 0;
+};
+
+struct SafetyEnvelope {
+  JointVector joint_min = JointVector::Constant(-kinematics::kJointLimitRad);
+  JointVector joint_max = JointVector::Constant(kinematics::kJointLimitRad);
+  // Every checked point keeps z >= table_z_base_m + table_clearance_m (base frame, z up).
+  std::optional<double> table_z_base_m;
+  double table_clearance_m = 0.02;
+  std::optional<KeepOutCylinder> keep_out;
+  // Points on the tool (flange frame) checked besides the elbow, wrists and flange: e.g. the
+  // camera body's corners.
+  std::vector<Eigen::Vector3d> tool_points_flange;
+  double max_joint_speed_rad_s = 1.05;
+  double max_joint_acceleration_rad_s2 = 1.4;
+  double max_linear_speed_m_s = 0.25;
+  double max_linear_acceleration_m_s2 = 1.2;
+  int path_samples = 32;
+
+  // Empty when usable, else the first bad field.
+  std::string Validate() const;
+};
+
+// Empty when the straight joint-space move from `from` to `to` stays inside the envelope at the
+// given speed and acceleration; else the reason, naming the joint, point or cap.
+std::string CheckJointMove(const SafetyEnvelope& envelope, const kinematics::DhParameters& dh,
+                           const JointVector& from, const JointVector& to, double speed,
+                           double acceleration);
+
+// The same for a straight tool move to T_base_flange; on success `target_q` (when given) holds
+// the IK solution nearest `from` that the move ends at.
+std::string CheckLinearMove(const SafetyEnvelope& envelope, const kinematics::DhParameters& dh,
+                            const JointVector& from, const Eigen::Isometry3d& T_base_flange,
+                            double speed, double acceleration, JointVector* target_q = nullptr);
+
+}  // namespace avc::robot

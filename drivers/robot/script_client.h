@@ -1,0 +1,44 @@
+#pragma once
+
+// Sends URScript programs to the secondary interface (30002) and reads back what the controller
+// says about them: runtime exceptions and text messages. Keeps the socket open and drains it
+// (the controller may discard a script whose socket closes before it read the stream).
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "drivers/robot/primary_protocol.h"
+#include "drivers/robot/tcp_socket.h"
+
+namespace avc::robot {
+
+class ScriptClient {
+ public:
+  ScriptClient(const std::string& host, uint16_t port, Milliseconds timeout = Milliseconds(2000));
+
+  // Sends a program (a trailing newline is added when missing).
+  void Send(const std::string& program);
+  // Robot messages (text and runtime exceptions) received within `timeout`; reading stops at the
+  // first message or the timeout. Throws ConnectionError on disconnect.
+  std::vector<primary::RobotMessage> Poll(Milliseconds timeout);
+
+  // What the controller announced on this connection (VERSION on connect, KINEMATICS_INFO in
+  // its ROBOT_STATE stream); filled by Poll.
+  const std::optional<primary::VersionMessage>& version() const { return version_; }
+  const std::optional<primary::KinematicsInfo>& kinematics() const { return kinematics_; }
+  // Polls until KINEMATICS_INFO arrived or `timeout` passed; returns it when it did.
+  std::optional<primary::KinematicsInfo> WaitForKinematics(Milliseconds timeout);
+
+  const std::string& peer() const { return stream_.peer(); }
+
+ private:
+  TcpStream stream_;
+  Milliseconds timeout_;
+  primary::PackageFramer framer_;
+  std::optional<primary::VersionMessage> version_;
+  std::optional<primary::KinematicsInfo> kinematics_;
+  std::vector<primary::RobotMessage> unread_;
+};
+
+}  // namespace avc::robot

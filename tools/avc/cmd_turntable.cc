@@ -1,0 +1,163 @@
+// avc turntable: the avc-turntable service for the LinearX LT360 (real device or an in-process
+// pty emulator), and `avc turntable list` to find USB serial adapters.
+
+#include <fmt/format.h>
+
+#include <iostream>
+#include <memory>
+#include <thread>
+
+#include "core/bus/service_runtime.h"
+#include "core/util/log.h"
+#include "drivers/turntable/turntable_node.h"
+#include "drivers/turntable/usb_serial_adapters.h"
+#include "sim/emulators/lt360/lt360_emulator.h"
+#include "tools/avc/bus_flags.h"
+#include "tools/avc/commands.h"
+#include "tools/avc/run_guarded.h"
+
+namespace avc::cli {
+namespace {
+
+struct TurntableArgs {
+  std::string device;
+  int baud = 9600;
+  std::string command_table;
+  int command_timeout_ms = 10'000;
+  double speed_deg_s = 30;
+  int poll_ms = 100;
+  bool emulate = false;
+  double emulate_speed_deg_s = 90;
+  double emulate_sigma_deg = 0.05;
+  double emulate_accel_deg_s2 = 180;
+  uint64_t emulate_seed = 1;
+  bus::BusFlags bus;
+};
+
+struct ListArgs {
+  double watch_s = 0;
+};
+
+int RunTurntable(const TurntableArgs& args) {
+  if (args.emulate == !args.device.empty()) {
+    throw std::invalid_argument("give exactly one of --device PATH or --emulate");
+  }
+  turntable::TurntableNodeOptions options;
+  options.baud = args.baud;
+  if (!args.command_table.empty()) {
+    options.device_options.table = turntable::LoadCommandTable(args.command_table);
+  }
+  options.device_options.command_timeout = std::chrono::milliseconds(args.command_timeout_ms);
+  options.controller.default_speed_deg_s = args.speed_deg_s;
+  options.poll_period = std::chrono::milliseconds(args.poll_ms);
+
+  std::unique_ptr<sim::Lt360Emulator> emulator;
+  if (args.emulate) {
+    sim::Lt360EmulatorOptions emulator_options;
+    emulator_options.table = options.device_options.table;
+    emulator_options.speed_deg_s = args.emulate_speed_deg_s;
+    emulator_options.sigma_deg = args.emulate_sigma_deg;
+    emulator_options.accel_deg_s2 = args.emulate_accel_deg_s2;
+    emulator_options.seed = args.emulate_seed;
+    emulator = std::make_unique<sim::Lt360Emulator>(emulator_options);
+    options.device = emulator->device_path();
+    log::Info("LT360 emulator on {} ({} deg/s)", options.device, args.emulate_speed_deg_s);
+  } else {
+    options.device = args.device;
+  }
+
+  bus::ServiceRuntime runtime(options.service, args.bus);
+  turntable::TurntableNode node(runtime.bus(), runtime.loop(), runtime.heartbeat(), options);
+  runtime.OnStop([&] { node.Shutdown(); });
+  return runtime.Run();
+}
+
+int RunList(const ListArgs& args) {
+  std::unique_ptr<turntable::UsbSerialAdapters> usb;
+  try {
+    usb = std::make_unique<turntable::UsbSerialAdapters>();
+  } catch (const turntable::UsbError& e) {
+    // No USB stack (e.g. a container): nothing can be plugged in, which is an answer, not a fault.
+    std::cout << "no USB serial adapters found (" << e.what() << ")\n";
+    return 0;
+  }
+  turntable::UsbSerialAdapters& adapters = *usb;
+  const std::vector<turntable::UsbSerialDevice> found = adapters.List();
+  if (found.empty()) {
+    std::cout << "no USB serial adapters found (known: ";
+    const auto& known = turntable::DefaultKnownAdapters();
+    for (size_t i = 0; i < known.size(); ++i) {
+      std::cout << fmt::format("{}{:04x}:{:04x} {}", i == 0 ? "" : ", ", known[i].vendor_id,
+                               known[i].product_id, known[i].name);
+    }
+    std::cout << ")\n";
+  }
+  for (const auto& device : found) std::cout << device.Describe() << "\n";
+  if (args.watch_s > 0) {
+    const bool hotplug = adapters.Watch([](turntable::UsbSerialAdapters::Event event,
+                                           const turntable::UsbSerialDevice& device) {
+      std::cout << (event == turntable::UsbSerialAdapters::Event::kArrived ? "arrived: " : "left: ")
+                << device.Describe() << std::endl;
+    });
+    std::cout << fmt::format("watching for {} s ({})", args.watch_s,
+                             hotplug ? "libusb hot-plug" : "polling")
+              << std::endl;
+    std::this_thread::sleep_for(std::chrono::duration<double>(args.watch_s));
+    adapters.StopWatching();
+  }
+  return 0;
+}
+
+}  // namespace
+
+void RegisterTurntable(CLI::App& root, int* exit_code) {
+  auto args = std::make_shared<TurntableArgs>();
+  CLI::App* command = root.add_subcommand(
+      "turntable",
+      "Run avc-turntable, the LinearX LT360 turntable service, on a serial device or emulated.\n"
+      "Takes TURNTABLE_COMMAND, answers on ACK and publishes TURNTABLE_STATE (~10 Hz) until\n"
+      "SIGINT/SIGTERM; a moving table is stopped first. --emulate starts an LT360 emulator on a\n"
+      "pseudo-terminal inside the process and drives it through the real serial backend.\n"
+      "Angles grow counter-clockwise seen from above.");
+  command->add_option("--device,-d", args->device, "serial device, e.g. /dev/ttyUSB0");
+  command->add_option("--baud", args->baud, "baud rate (8N1)")->capture_default_str();
+  command->add_option("--command-table", args->command_table,
+                      "JSON file with the LT360 command strings (default: built-in table)");
+  command->add_option("--command-timeout-ms", args->command_timeout_ms, "reply timeout")
+      ->capture_default_str();
+  CLI::Option* speed =
+      command
+          ->add_option("--speed", args->speed_deg_s,
+                       "default speed in deg/s (with --emulate: the emulated speed)")
+          ->capture_default_str();
+  command->add_option("--poll-ms", args->poll_ms, "state poll period")->capture_default_str();
+  command->add_flag("--emulate", args->emulate, "use an in-process LT360 emulator on a pty");
+  command->add_option("--emulate-speed", args->emulate_speed_deg_s, "emulated speed in deg/s")
+      ->capture_default_str();
+  command
+      ->add_option("--emulate-accel", args->emulate_accel_deg_s2,
+                   "emulated acceleration in deg/s^2 (0 = full speed at once)")
+      ->capture_default_str();
+  command
+      ->add_option("--emulate-sigma", args->emulate_sigma_deg,
+                   "emulated true-angle error per move (deg, 1 sigma)")
+      ->capture_default_str();
+  command->add_option("--emulate-seed", args->emulate_seed, "seed of the emulated angle error")
+      ->capture_default_str();
+  AddBusFlags(command, &args->bus);
+
+  auto list_args = std::make_shared<ListArgs>();
+  CLI::App* list = command->add_subcommand(
+      "list", "List USB serial adapters (FTDI, Prolific, CH340, CP210x) found with libusb.");
+  list->add_option("--watch", list_args->watch_s,
+                   "then report arrivals and departures for this many seconds");
+  SetGuardedRun(list, exit_code, [list_args] { return RunList(*list_args); });
+  SetGuardedRun(command, exit_code, [args, list, speed, exit_code] {
+    if (list->parsed()) return *exit_code;  // `avc turntable list` ran instead of the service
+    // Emulated, the driver would otherwise slow the emulator down to its own default.
+    if (args->emulate && speed->count() == 0) args->speed_deg_s = args->emulate_speed_deg_s;
+    return RunTurntable(*args);
+  });
+}
+
+}  // namespace avc::cli
