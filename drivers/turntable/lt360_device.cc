@@ -12,17 +12,6 @@ std::string Seconds(std::chrono::milliseconds duration) {
                                       : fmt::format("{:.3g} s", duration.count() / 1000.0);
 }
 
-bool EqualsIgnoreCase(const std::string& a, const std::string& b) {
-  if (a.size() != b.size()) return false;
-  for (size_t i = 0; i < a.size(); ++i) {
-    if (std::toupper(static_cast<unsigned char>(a[i])) !=
-        std::toupper(static_cast<unsigned char>(b[i]))) {
-      return false;
-    }
-  }
-  return true;
-}
-
 }  // namespace
 
 int NormaliseTenths(int tenths) { return ((tenths % 3600) + 3600) % 3600; }

@@ -93,6 +93,9 @@ std::string FormatPositionTenths(int tenths);
 // "CW", "ccw", "No" -> Motion. Throws InvalidReply quoting the reply.
 Motion ParseMotion(std::string_view reply);
 
+// The device answers in either case: replies and commands compare case-insensitively.
+bool EqualsIgnoreCase(std::string_view a, std::string_view b);
+
 // Splits a byte stream into replies/commands terminated by CR or NUL; LF is dropped (some
 // adapters add it). Bytes after the last terminator wait for more input.
 class FrameSplitter {
