@@ -18,8 +18,9 @@ constexpr std::array<CommandKind, kCommandKindCount> kAllKinds = {
     CommandKind::kGotoCw,      CommandKind::kGotoCcw,   CommandKind::kStep,
     CommandKind::kHome,        CommandKind::kStop,      CommandKind::kSetSpeed};
 
-// The placeholder a command of this kind must carry; empty for commands without argument.
-std::string_view Placeholder(CommandKind kind) {
+// The argument field ("{angle}", "{speed}") a command of this kind must carry; empty for
+// commands without argument.
+std::string_view ArgumentField(CommandKind kind) {
   switch (kind) {
     case CommandKind::kGotoShortest:
     case CommandKind::kGotoCw:
@@ -157,14 +158,14 @@ std::string CommandTable::Validate() const {
   for (const CommandKind kind : kAllKinds) {
     const std::string& text = Template(kind);
     if (text.empty()) continue;
-    const std::string_view placeholder = Placeholder(kind);
+    const std::string_view argument_field = ArgumentField(kind);
     const size_t braces = std::count(text.begin(), text.end(), '{');
-    if (placeholder.empty() ? braces != 0
-                            : (braces != 1 || text.find(placeholder) == std::string::npos)) {
+    if (argument_field.empty() ? braces != 0
+                               : (braces != 1 || text.find(argument_field) == std::string::npos)) {
       return fmt::format("command table: '{}' = {} must contain {}", CommandKindName(kind),
                          Quote(text),
-                         placeholder.empty() ? std::string("no placeholder")
-                                             : "exactly one " + std::string(placeholder));
+                         argument_field.empty() ? std::string("no argument field")
+                                                : "exactly one " + std::string(argument_field));
     }
     if (text.find_first_of(std::string("\r\n\0", 3)) != std::string::npos) {
       return fmt::format("command table: '{}' contains a terminator", CommandKindName(kind));
@@ -213,8 +214,8 @@ std::string FormatCommand(const CommandTable& table, CommandKind kind, double va
     throw ProtocolError(
         fmt::format("the command table has no '{}' command", CommandKindName(kind)));
   }
-  const std::string_view placeholder = Placeholder(kind);
-  if (placeholder.empty()) return text;
+  const std::string_view argument_field = ArgumentField(kind);
+  if (argument_field.empty()) return text;
   if (!std::isfinite(value)) {
     throw ProtocolError(
         fmt::format("'{}' needs a finite value, got {}", CommandKindName(kind), value));
@@ -222,7 +223,7 @@ std::string FormatCommand(const CommandTable& table, CommandKind kind, double va
   std::string out = text;
   // Values are sent in the device's 0.1 unit; "-0.0" is never sent.
   const double rounded = std::round(value * 10) / 10;
-  out.replace(out.find(placeholder), placeholder.size(),
+  out.replace(out.find(argument_field), argument_field.size(),
               fmt::format("{:.1f}", rounded == 0 ? 0.0 : rounded));
   return out;
 }
@@ -232,14 +233,14 @@ std::optional<ParsedCommand> MatchCommand(const CommandTable& table, std::string
   for (const CommandKind kind : kAllKinds) {
     const std::string& text = table.Template(kind);
     if (text.empty()) continue;
-    const std::string_view placeholder = Placeholder(kind);
-    if (placeholder.empty()) {
+    const std::string_view argument_field = ArgumentField(kind);
+    if (argument_field.empty()) {
       if (EqualsIgnoreCase(line, text)) return ParsedCommand{kind, std::nullopt};
       continue;
     }
-    const size_t at = text.find(placeholder);
+    const size_t at = text.find(argument_field);
     const std::string_view prefix = std::string_view(text).substr(0, at);
-    const std::string_view suffix = std::string_view(text).substr(at + placeholder.size());
+    const std::string_view suffix = std::string_view(text).substr(at + argument_field.size());
     if (line.size() <= prefix.size() + suffix.size()) continue;
     if (!EqualsIgnoreCase(line.substr(0, prefix.size()), prefix) ||
         !EqualsIgnoreCase(line.substr(line.size() - suffix.size()), suffix)) {

@@ -199,55 +199,56 @@ TEST(Supervisor, StopSendsSigtermThenSigkillAfterStopTimeout) {
   const std::string loop = "while :; do sleep 0.05; done";
   Supervisor supervisor(
       h.Spec({Sh("polite", "echo ready:$$; " + loop, RestartPolicy::kAlways, milliseconds(5000)),
-              Sh("stubborn", "trap '' TERM; echo ready:$$; " + loop, RestartPolicy::kAlways,
+              Sh("ignores_term", "trap '' TERM; echo ready:$$; " + loop, RestartPolicy::kAlways,
                  milliseconds(300))}),
       h.bus, h.loop, Harness::Options());
   supervisor.Start();
   // Ready means the trap is in place: a SIGTERM before it would kill the shell.
   ASSERT_TRUE(h.loop.RunUntil(
-      [&] { return Ready(h, supervisor, "polite") && Ready(h, supervisor, "stubborn"); },
+      [&] { return Ready(h, supervisor, "polite") && Ready(h, supervisor, "ignores_term"); },
       std::chrono::seconds(5)));
-  const process_info_t before = Info(supervisor, "stubborn");
+  const process_info_t before = Info(supervisor, "ignores_term");
   EXPECT_EQ(before.state, process_info_t::STATE_RUNNING);
   ASSERT_GT(before.pid, 0);
-  const pid_t stubborn_pid = before.pid;
+  const pid_t ignorer_pid = before.pid;
 
   const auto stop_time = Clock::now();
   supervisor.Stop();
-  EXPECT_EQ(Info(supervisor, "stubborn").state, process_info_t::STATE_STOPPING);
+  EXPECT_EQ(Info(supervisor, "ignores_term").state, process_info_t::STATE_STOPPING);
   std::optional<Clock::duration> polite_stopped;
-  std::optional<Clock::duration> stubborn_stopped;
+  std::optional<Clock::duration> ignorer_stopped;
   ASSERT_TRUE(h.loop.RunUntil(
       [&] {
         if (!polite_stopped && Info(supervisor, "polite").pid == 0) {
           polite_stopped = Clock::now() - stop_time;
         }
-        if (!stubborn_stopped && Info(supervisor, "stubborn").pid == 0) {
-          stubborn_stopped = Clock::now() - stop_time;
+        if (!ignorer_stopped && Info(supervisor, "ignores_term").pid == 0) {
+          ignorer_stopped = Clock::now() - stop_time;
         }
         return supervisor.finished();
       },
       std::chrono::seconds(5)));
-  ASSERT_TRUE(polite_stopped && stubborn_stopped);
+  ASSERT_TRUE(polite_stopped && ignorer_stopped);
   EXPECT_LT(*polite_stopped, milliseconds(1000)) << "SIGTERM stops it, long before SIGKILL";
-  EXPECT_GE(*stubborn_stopped, milliseconds(290)) << "SIGKILL only after stop_timeout";
-  EXPECT_LT(*stubborn_stopped, milliseconds(2300));
+  EXPECT_GE(*ignorer_stopped, milliseconds(290)) << "SIGKILL only after stop_timeout";
+  EXPECT_LT(*ignorer_stopped, milliseconds(2300));
 
   const process_info_t polite = Info(supervisor, "polite");
   EXPECT_EQ(polite.state, process_info_t::STATE_EXITED);
   EXPECT_EQ(polite.last_signal, SIGTERM);
   EXPECT_EQ(polite.last_exit_code, -1);
   EXPECT_EQ(polite.restarts, 0) << "a stop is not a failure to restart";
-  const process_info_t stubborn = Info(supervisor, "stubborn");
-  EXPECT_EQ(stubborn.state, process_info_t::STATE_EXITED);
-  EXPECT_EQ(stubborn.last_signal, SIGKILL);
-  EXPECT_EQ(stubborn.restarts, 0);
+  const process_info_t ignorer = Info(supervisor, "ignores_term");
+  EXPECT_EQ(ignorer.state, process_info_t::STATE_EXITED);
+  EXPECT_EQ(ignorer.last_signal, SIGKILL);
+  EXPECT_EQ(ignorer.restarts, 0);
   EXPECT_EQ(supervisor.exit_code(), 0);
   errno = 0;
-  EXPECT_EQ(kill(stubborn_pid, 0), -1);
+  EXPECT_EQ(kill(ignorer_pid, 0), -1);
   EXPECT_EQ(errno, ESRCH);
   EXPECT_NE(h.Log("polite").find("killed by SIGTERM"), std::string::npos) << h.Log("polite");
-  EXPECT_NE(h.Log("stubborn").find("killed by SIGKILL"), std::string::npos) << h.Log("stubborn");
+  EXPECT_NE(h.Log("ignores_term").find("killed by SIGKILL"), std::string::npos)
+      << h.Log("ignores_term");
 
   h.bus.DispatchPending();
   ASSERT_FALSE(h.heartbeats.empty());
@@ -258,12 +259,12 @@ TEST(Supervisor, StopSendsSigtermThenSigkillAfterStopTimeout) {
 TEST(Supervisor, SecondStopKillsAtOnce) {
   Harness h;
   Supervisor supervisor(
-      h.Spec({Sh("stubborn", "trap '' TERM; echo ready:$$; while :; do sleep 0.05; done",
+      h.Spec({Sh("ignores_term", "trap '' TERM; echo ready:$$; while :; do sleep 0.05; done",
                  RestartPolicy::kOnFailure, milliseconds(30'000))}),
       h.bus, h.loop, Harness::Options());
   supervisor.Start();
-  ASSERT_TRUE(
-      h.loop.RunUntil([&] { return Ready(h, supervisor, "stubborn"); }, std::chrono::seconds(5)));
+  ASSERT_TRUE(h.loop.RunUntil([&] { return Ready(h, supervisor, "ignores_term"); },
+                              std::chrono::seconds(5)));
   supervisor.Stop();
   h.loop.RunUntil([] { return false; }, milliseconds(100));
   EXPECT_FALSE(supervisor.finished()) << "TERM is ignored and SIGKILL is 30 s away";
@@ -271,7 +272,7 @@ TEST(Supervisor, SecondStopKillsAtOnce) {
   supervisor.Stop();
   ASSERT_TRUE(h.loop.RunUntil([&] { return supervisor.finished(); }, std::chrono::seconds(5)));
   EXPECT_LT(Clock::now() - start, milliseconds(2000));
-  EXPECT_EQ(Info(supervisor, "stubborn").last_signal, SIGKILL);
+  EXPECT_EQ(Info(supervisor, "ignores_term").last_signal, SIGKILL);
 }
 
 TEST(Supervisor, EnvironmentIsMergedAndWorkingDirUsed) {
