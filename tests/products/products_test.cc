@@ -10,18 +10,14 @@
 #include "core/products/product_receiver.h"
 #include "core/products/product_sender.h"
 #include "core/util/sha256.h"
+#include "tests/support/test_support.h"
 
 namespace avc::products {
 namespace {
 
-using std::chrono::milliseconds;
+using testing::RandomBytes;
 
-std::vector<uint8_t> RandomBytes(size_t size, uint32_t seed) {
-  std::vector<uint8_t> bytes(size);
-  std::mt19937 rng(seed);
-  for (auto& b : bytes) b = static_cast<uint8_t>(rng());
-  return bytes;
-}
+using std::chrono::milliseconds;
 
 struct Harness {
   explicit Harness(size_t cap = 64 * 1024) : bus(Options(cap)) { bus.AttachTo(loop); }

@@ -33,23 +33,12 @@
 namespace avc::record {
 namespace {
 
+using testing::Encode;
+using testing::RandomBytes;
+
 namespace fs = std::filesystem;
 using std::chrono::milliseconds;
 using std::chrono::seconds;
-
-template <class T>
-std::string Encode(const T& msg) {
-  std::string bytes(static_cast<size_t>(msg.getEncodedSize()), '\0');
-  msg.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
-  return bytes;
-}
-
-std::vector<uint8_t> RandomBytes(size_t size, uint32_t seed) {
-  std::vector<uint8_t> bytes(size);
-  std::mt19937 rng(seed);
-  for (auto& b : bytes) b = static_cast<uint8_t>(rng());
-  return bytes;
-}
 
 std::string Text(const std::vector<uint8_t>& bytes) { return {bytes.begin(), bytes.end()}; }
 

@@ -32,6 +32,9 @@
 namespace avc::record {
 namespace {
 
+using testing::Encode;
+using testing::RandomBytes;
+
 using std::chrono::milliseconds;
 
 struct LoggedEvent {
@@ -60,25 +63,11 @@ LogContents ReadLog(const std::filesystem::path& path) {
 }
 
 template <class T>
-std::string Encode(const T& msg) {
-  std::string bytes(static_cast<size_t>(msg.getEncodedSize()), '\0');
-  msg.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
-  return bytes;
-}
-
-template <class T>
 T Decode(const std::string& bytes) {
   T msg{};
   EXPECT_GE(msg.decode(bytes.data(), 0, static_cast<int>(bytes.size())), 0)
       << "does not decode as " << T::getTypeName();
   return msg;
-}
-
-std::vector<uint8_t> RandomBytes(size_t size, uint32_t seed) {
-  std::vector<uint8_t> bytes(size);
-  std::mt19937 rng(seed);
-  for (auto& b : bytes) b = static_cast<uint8_t>(rng());
-  return bytes;
 }
 
 std::vector<std::string> Channels(const LogContents& log) {

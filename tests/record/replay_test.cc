@@ -37,24 +37,13 @@
 namespace avc::record {
 namespace {
 
+using testing::Encode;
+using testing::RandomBytes;
+
 namespace fs = std::filesystem;
 
 constexpr size_t kChunkCap = 8 * 1024;  // small, so every product is several chunks
 constexpr int64_t kStartUtime = 1'700'000'000'000'000;
-
-template <class T>
-std::string Encode(const T& msg) {
-  std::string bytes(static_cast<size_t>(msg.getEncodedSize()), '\0');
-  msg.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
-  return bytes;
-}
-
-std::vector<uint8_t> RandomBytes(size_t size, uint32_t seed) {
-  std::vector<uint8_t> bytes(size);
-  std::mt19937 rng(seed);
-  for (auto& b : bytes) b = static_cast<uint8_t>(rng());
-  return bytes;
-}
 
 template <class T>
 products::Product MakeProduct(const std::string& id, const std::string& name, const T& msg) {

@@ -2,8 +2,10 @@
 
 // Small helpers shared by the tests.
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace avc::testing {
 
@@ -29,5 +31,16 @@ std::filesystem::path Executable(const std::string& name);
 
 std::string ReadFile(const std::filesystem::path& path);
 void WriteFile(const std::filesystem::path& path, const std::string& contents);
+
+// size seeded pseudo-random bytes (the same for the same seed).
+std::vector<uint8_t> RandomBytes(size_t size, uint32_t seed);
+
+// The LCM encoding of msg.
+template <class T>
+std::string Encode(const T& msg) {
+  std::string bytes(static_cast<size_t>(msg.getEncodedSize()), '\0');
+  msg.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+  return bytes;
+}
 
 }  // namespace avc::testing
