@@ -13,6 +13,7 @@
 #include "core/bus/bus.h"
 #include "core/bus/event_loop.h"
 #include "core/bus/heartbeat.h"
+#include "core/bus/service_runtime.h"
 #include "core/record/recorder.h"
 #include "core/util/clock.h"
 #include "core/util/log.h"
@@ -103,7 +104,6 @@ std::string ExpandTimeFields(const std::string& pattern) {
 }
 
 int RunRecord(RecordArgs args) {
-  log::SetProcessName("avc-record");
   args.output = ExpandTimeFields(args.output);
   record::RecorderOptions options;
   options.output = args.output;
@@ -114,29 +114,25 @@ int RunRecord(RecordArgs args) {
     options.config_text = ReadConfig(args.config);
     options.config_format = ConfigFormat(args.config);
   }
-  bus::Bus bus(bus::ResolveBusOptions(args.bus, "avc-record"));
-  bus::EventLoop loop;
-  bus.AttachTo(loop);
-  // Before READY is announced, so a stop request right after it is never fatal.
-  loop.QuitOnTerminationSignals();
-  // The recorder first: a refused output file stops us before anything is said on the bus.
-  record::Recorder recorder(bus, loop, options);
-  bus::HeartbeatPublisher heartbeat(bus, loop, "avc-record");
+  // Signals are handled from here on, so a stop request right after READY is never fatal.
+  bus::ServiceRuntime runtime("avc-record", args.bus);
+  record::Recorder recorder(runtime.bus(), runtime.loop(), options);
   auto refresh = [&] {
     const record::RecorderStats& stats = recorder.stats();
-    heartbeat.Set(stats.write_errors > 0 ? bus::ServiceState::kError : bus::ServiceState::kReady,
-                  Detail(stats));
+    runtime.heartbeat().Set(
+        stats.write_errors > 0 ? bus::ServiceState::kError : bus::ServiceState::kReady,
+        Detail(stats));
   };
   refresh();
   const bus::EventLoop::TimerId refresh_timer =
-      loop.AddTimer(std::chrono::seconds(1), refresh, /*repeating=*/true);
-  log::Info("recording {} into {}", args.all_cells ? "every cell" : "cell " + bus.cell(),
+      runtime.loop().AddTimer(std::chrono::seconds(1), refresh, /*repeating=*/true);
+  log::Info("recording {} into {}", args.all_cells ? "every cell" : "cell " + runtime.bus().cell(),
             args.output);
 
-  loop.Run();
-  loop.CancelTimer(refresh_timer);
-  heartbeat.Set(bus::ServiceState::kStopping, Detail(recorder.stats()));
-  DrainBus(bus);
+  runtime.Run();
+  runtime.loop().CancelTimer(refresh_timer);
+  runtime.heartbeat().Set(bus::ServiceState::kStopping, Detail(recorder.stats()));
+  DrainBus(runtime.bus());
   recorder.Stop();
 
   const record::RecorderStats& stats = recorder.stats();
