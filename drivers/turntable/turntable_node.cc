@@ -14,7 +14,6 @@
 namespace avc::turntable {
 namespace {
 
-constexpr size_t kRememberedAcks = 1024;
 constexpr double kDegPerRad = 180 / std::numbers::pi;
 
 class MonotonicClock final : public Clock {
@@ -60,6 +59,7 @@ TurntableNode::TurntableNode(bus::Bus& bus, bus::EventLoop& loop,
       loop_(loop),
       heartbeat_(heartbeat),
       options_(std::move(options)),
+      acks_(bus, options_.service),
       clock_(std::make_unique<MonotonicClock>()),
       reconnect_delay_(options_.reconnect_min) {
   const std::string problem = options_.Validate();
@@ -173,12 +173,7 @@ std::string TurntableNode::Validate(const avc::turntable_command_t& command) con
 }
 
 void TurntableNode::OnCommand(const avc::turntable_command_t& command) {
-  if (const auto it = last_ack_.find(command.request_id); it != last_ack_.end()) {
-    // A repeat: answer again, never move again.
-    avc::ack_t ack = it->second;
-    bus_.Publish(channels::kAck, ack);
-    return;
-  }
+  if (acks_.Repeat(command.request_id)) return;  // answered before: never move again
   const std::string refusal = Validate(command);
   if (!refusal.empty()) {
     log::Warn("turntable: refused {} '{}': {}", KindName(command.kind), command.request_id,
@@ -252,21 +247,7 @@ void TurntableNode::FinishActive(int8_t status, const std::string& reason) {
 
 void TurntableNode::SendAck(const std::string& request_id, int8_t status,
                             const std::string& reason) {
-  avc::ack_t ack{};
-  ack.request_id = request_id;
-  ack.service = options_.service;
-  ack.status = status;
-  ack.reason = reason;
-  bus_.Publish(channels::kAck, ack);
-  if (request_id.empty()) return;
-  if (last_ack_.find(request_id) == last_ack_.end()) {
-    ack_order_.push_back(request_id);
-    if (ack_order_.size() > kRememberedAcks) {
-      last_ack_.erase(ack_order_.front());
-      ack_order_.pop_front();
-    }
-  }
-  last_ack_[request_id] = ack;
+  acks_.Send(request_id, status, reason);
 }
 
 void TurntableNode::PublishState() {

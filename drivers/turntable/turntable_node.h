@@ -13,11 +13,10 @@
 #include <avc/ack_t.hpp>
 #include <avc/turntable_command_t.hpp>
 #include <chrono>
-#include <deque>
-#include <map>
 #include <memory>
 #include <string>
 
+#include "core/bus/ack_book.h"
 #include "core/bus/bus.h"
 #include "core/bus/event_loop.h"
 #include "core/bus/heartbeat.h"
@@ -77,6 +76,7 @@ class TurntableNode {
   bus::EventLoop& loop_;
   bus::HeartbeatPublisher& heartbeat_;
   TurntableNodeOptions options_;
+  bus::AckBook acks_;
   std::unique_ptr<Clock> clock_;
 
   std::unique_ptr<Lt360Device> device_;
@@ -88,8 +88,6 @@ class TurntableNode {
 
   std::string active_request_;
   std::string active_description_;
-  std::map<std::string, avc::ack_t> last_ack_;
-  std::deque<std::string> ack_order_;  // bounds last_ack_
 
   bus::Bus::SubscriptionId subscription_ = 0;
   bus::EventLoop::TimerId timer_ = 0;

@@ -15,6 +15,7 @@
 #include "tools/avc/bus_flags.h"
 #include "tools/avc/commands.h"
 #include "tools/avc/run_guarded.h"
+#include "tools/avc/usb_listing.h"
 
 namespace avc::cli {
 namespace {
@@ -73,39 +74,7 @@ int RunTurntable(const TurntableArgs& args) {
 }
 
 int RunList(const ListArgs& args) {
-  std::unique_ptr<turntable::UsbSerialAdapters> usb;
-  try {
-    usb = std::make_unique<turntable::UsbSerialAdapters>();
-  } catch (const turntable::UsbError& e) {
-    // No USB stack (e.g. a container): nothing can be plugged in, which is an answer, not a fault.
-    std::cout << "no USB serial adapters found (" << e.what() << ")\n";
-    return 0;
-  }
-  turntable::UsbSerialAdapters& adapters = *usb;
-  const std::vector<turntable::UsbSerialDevice> found = adapters.List();
-  if (found.empty()) {
-    std::cout << "no USB serial adapters found (known: ";
-    const auto& known = turntable::DefaultKnownAdapters();
-    for (size_t i = 0; i < known.size(); ++i) {
-      std::cout << fmt::format("{}{:04x}:{:04x} {}", i == 0 ? "" : ", ", known[i].vendor_id,
-                               known[i].product_id, known[i].name);
-    }
-    std::cout << ")\n";
-  }
-  for (const auto& device : found) std::cout << device.Describe() << "\n";
-  if (args.watch_s > 0) {
-    const bool hotplug = adapters.Watch([](turntable::UsbSerialAdapters::Event event,
-                                           const turntable::UsbSerialDevice& device) {
-      std::cout << (event == turntable::UsbSerialAdapters::Event::kArrived ? "arrived: " : "left: ")
-                << device.Describe() << std::endl;
-    });
-    std::cout << fmt::format("watching for {} s ({})", args.watch_s,
-                             hotplug ? "libusb hot-plug" : "polling")
-              << std::endl;
-    std::this_thread::sleep_for(std::chrono::duration<double>(args.watch_s));
-    adapters.StopWatching();
-  }
-  return 0;
+  return ListUsbDevices(turntable::DefaultKnownAdapters(), "USB serial adapters", args.watch_s);
 }
 
 }  // namespace

@@ -17,7 +17,7 @@
 #include <thread>
 
 #include "drivers/turntable/lt360_protocol.h"
-#include "sim/emulators/lt360/emulator_clock.h"
+#include "sim/emulators/clock/emulator_clock.h"
 
 namespace avc::sim {
 
