@@ -22,6 +22,8 @@ void BigEndianWriter::U64(uint64_t value) {
   U32(static_cast<uint32_t>(value));
 }
 
+void BigEndianWriter::F32(float value) { U32(std::bit_cast<uint32_t>(value)); }
+
 void BigEndianWriter::F64(double value) { U64(std::bit_cast<uint64_t>(value)); }
 
 void BigEndianReader::Need(size_t count) const {
@@ -50,6 +52,8 @@ uint64_t BigEndianReader::U64() {
   const uint64_t high = U32();
   return (high << 32) | U32();
 }
+
+float BigEndianReader::F32() { return std::bit_cast<float>(U32()); }
 
 double BigEndianReader::F64() { return std::bit_cast<double>(U64()); }
 

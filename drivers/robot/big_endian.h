@@ -17,6 +17,7 @@ class BigEndianWriter {
   void U32(uint32_t value);
   void U64(uint64_t value);
   void I32(int32_t value) { U32(static_cast<uint32_t>(value)); }
+  void F32(float value);
   void F64(double value);
   void Bytes(std::string_view text) { bytes_.insert(bytes_.end(), text.begin(), text.end()); }
 
@@ -39,6 +40,7 @@ class BigEndianReader {
   uint32_t U32();
   uint64_t U64();
   int32_t I32() { return static_cast<int32_t>(U32()); }
+  float F32();
   double F64();
   std::string Bytes(size_t count);
   std::string Rest() { return Bytes(Remaining()); }

@@ -36,6 +36,16 @@ DashboardClient::DashboardClient(const std::string& host, uint16_t port, Millise
   }
 }
 
+void DashboardClient::CheckConnected() {
+  uint8_t chunk[1024];
+  try {
+    const size_t n = stream_.ReceiveSome(chunk, sizeof(chunk), Milliseconds(0));
+    buffer_.append(reinterpret_cast<const char*>(chunk), n);
+  } catch (const ConnectionError& error) {
+    throw ConnectionError(fmt::format("dashboard: {}", error.what()));
+  }
+}
+
 std::string DashboardClient::ReadLine(const std::string& step) {
   const auto deadline = Clock::now() + timeout_;
   while (true) {

@@ -32,6 +32,10 @@ class DashboardClient {
   std::string SafetyStatus();   // "Safetystatus: NORMAL" (>= 5.4); the text after the colon
   std::string PolyscopeVersion();
 
+  // Notices, without waiting, a connection the server closed: throws ConnectionError naming the
+  // peer (the dashboard sends nothing unasked, so a closed socket is the only thing to read).
+  void CheckConnected();
+
   const std::string& banner() const { return banner_; }
 
  private:

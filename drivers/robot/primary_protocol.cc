@@ -22,12 +22,7 @@ std::vector<uint8_t> EncodeRobotMessage(const RobotMessage& message) {
     body.I32(message.column);
   }
   body.Bytes(message.text);
-  BigEndianWriter framed;
-  framed.U32(static_cast<uint32_t>(kHeaderSize + body.bytes().size()));
-  framed.U8(kRobotMessageType);
-  auto bytes = std::move(framed.bytes());
-  bytes.insert(bytes.end(), body.bytes().begin(), body.bytes().end());
-  return bytes;
+  return FramePackage(kRobotMessageType, body.bytes());
 }
 
 std::optional<RobotMessage> DecodeRobotMessage(const std::vector<uint8_t>& body) {
@@ -46,9 +41,7 @@ std::optional<RobotMessage> DecodeRobotMessage(const std::vector<uint8_t>& body)
   return message;
 }
 
-namespace {
-
-std::vector<uint8_t> Frame(uint8_t type, const std::vector<uint8_t>& body) {
+std::vector<uint8_t> FramePackage(uint8_t type, const std::vector<uint8_t>& body) {
   BigEndianWriter framed;
   framed.U32(static_cast<uint32_t>(kHeaderSize + body.size()));
   framed.U8(type);
@@ -56,8 +49,6 @@ std::vector<uint8_t> Frame(uint8_t type, const std::vector<uint8_t>& body) {
   bytes.insert(bytes.end(), body.begin(), body.end());
   return bytes;
 }
-
-}  // namespace
 
 std::vector<uint8_t> EncodeVersionMessage(const VersionMessage& version, uint64_t timestamp) {
   BigEndianWriter body;
@@ -71,7 +62,7 @@ std::vector<uint8_t> EncodeVersionMessage(const VersionMessage& version, uint64_
   body.I32(version.bugfix);
   body.I32(version.build);
   body.Bytes(version.build_date);
-  return Frame(kRobotMessageType, body.bytes());
+  return FramePackage(kRobotMessageType, body.bytes());
 }
 
 std::optional<VersionMessage> DecodeVersionMessage(const std::vector<uint8_t>& body) {
@@ -87,43 +78,6 @@ std::optional<VersionMessage> DecodeVersionMessage(const std::vector<uint8_t>& b
   version.build = reader.I32();
   version.build_date = reader.Rest();
   return version;
-}
-
-std::vector<uint8_t> EncodeKinematicsState(const KinematicsInfo& info) {
-  BigEndianWriter sub;
-  for (uint32_t c : info.checksum) sub.U32(c);
-  for (const auto* values : {&info.theta, &info.a, &info.d, &info.alpha}) {
-    for (double v : *values) sub.F64(v);
-  }
-  sub.U32(info.calibration_status);
-  // Sub-packages are framed like packages: int32 size (incl. header) + uint8 type.
-  return Frame(kRobotStateType, Frame(kKinematicsInfoType, sub.bytes()));
-}
-
-std::optional<KinematicsInfo> FindKinematicsInfo(const std::vector<uint8_t>& body) {
-  size_t offset = 0;
-  while (offset + kHeaderSize <= body.size()) {
-    BigEndianReader header(body.data() + offset, body.size() - offset, "ROBOT_STATE sub-package");
-    const uint32_t size = header.U32();
-    const uint8_t type = header.U8();
-    if (size < kHeaderSize || size > body.size() - offset) {
-      throw std::runtime_error(
-          fmt::format("ROBOT_STATE sub-package at offset {} announces {} bytes", offset, size));
-    }
-    if (type == kKinematicsInfoType) {
-      BigEndianReader reader(body.data() + offset + kHeaderSize, size - kHeaderSize,
-                             "KINEMATICS_INFO");
-      KinematicsInfo info;
-      for (auto& c : info.checksum) c = reader.U32();
-      for (auto* values : {&info.theta, &info.a, &info.d, &info.alpha}) {
-        for (double& v : *values) v = reader.F64();
-      }
-      info.calibration_status = reader.U32();
-      return info;
-    }
-    offset += size;
-  }
-  return std::nullopt;
 }
 
 void PackageFramer::Append(const uint8_t* data, size_t size) {

@@ -1,9 +1,10 @@
 #pragma once
 
 // The subset of the primary/secondary interface (30001/30002) the driver reads back after sending
-// a script: message framing (int32 size incl. header, uint8 type) and ROBOT_MESSAGE text and
-// runtime-exception messages (Universal_Robots_Client_Library primary/robot_message/*). Other
-// packages (the 10 Hz ROBOT_STATE stream, VERSION, ...) are skipped by size.
+// a script: message framing (int32 size incl. header, uint8 type), ROBOT_MESSAGE text,
+// runtime-exception and VERSION messages (Universal_Robots_Client_Library
+// primary/robot_message/*). The ROBOT_STATE stream is in primary_robot_state.h; other packages
+// are skipped by size.
 
 #include <array>
 #include <cstdint>
@@ -49,19 +50,9 @@ std::vector<uint8_t> EncodeVersionMessage(const VersionMessage& version, uint64_
 // From a ROBOT_MESSAGE body; nullopt when it is another message type.
 std::optional<VersionMessage> DecodeVersionMessage(const std::vector<uint8_t>& body);
 
-// ROBOT_STATE (type 16) sub-package 5, KINEMATICS_INFO: the arm's factory-calibrated DH set.
-inline constexpr uint8_t kRobotStateType = 16;
-inline constexpr uint8_t kKinematicsInfoType = 5;
-struct KinematicsInfo {
-  std::array<uint32_t, 6> checksum{};
-  std::array<double, 6> theta{}, a{}, d{}, alpha{};
-  uint32_t calibration_status = 0;
-  bool operator==(const KinematicsInfo&) const = default;
-};
-// A framed ROBOT_STATE package holding only the KINEMATICS_INFO sub-package.
-std::vector<uint8_t> EncodeKinematicsState(const KinematicsInfo& info);
-// Walks a ROBOT_STATE body's sub-packages (skipping unknown ones by size) for KINEMATICS_INFO.
-std::optional<KinematicsInfo> FindKinematicsInfo(const std::vector<uint8_t>& body);
+// Frames a body as a package (or a ROBOT_STATE sub-package: same header): int32 size including
+// the 5-byte header, uint8 type.
+std::vector<uint8_t> FramePackage(uint8_t type, const std::vector<uint8_t>& body);
 
 struct Package {
   uint8_t type = 0;

@@ -14,258 +14,207 @@
 namespace avc::robot {
 namespace {
 
-using Command = avc::robot_command_t;
 using Clock = std::chrono::steady_clock;
-
-JointVector ToJoints(const std::array<double, 6>& q) {
-  return Eigen::Map<const JointVector>(q.data());
-}
 
 // Consecutive "reached" states required, so one state from before the program started (already
 // at the target by chance) cannot end the motion early.
 constexpr int kSettleSamples = 3;
 
+ControllerAddress AddressOf(const RobotNodeConfig& config) {
+  return {config.host, config.rtde_port, config.secondary_port, config.dashboard_port,
+          config.connect_timeout};
+}
+
 }  // namespace
 
-Eigen::Isometry3d IsometryFromRowMajor(const double* values) {
-  Eigen::Matrix4d m;
-  for (int r = 0; r < 4; ++r) {
-    for (int c = 0; c < 4; ++c) m(r, c) = values[4 * r + c];
+std::string RobotNodeConfig::Validate() const {
+  if (service.empty()) return "empty service name";
+  if (connect_timeout.count() <= 0) return "connect timeout must be > 0";
+  if (poll_period.count() <= 0) return "poll period must be > 0";
+  if (reconnect_min.count() <= 0 || reconnect_max < reconnect_min) {
+    return "reconnect backoff must satisfy 0 < min <= max";
   }
-  Eigen::Isometry3d pose;
-  pose.matrix() = m;
-  return pose;
+  if (watchdog_timeout.count() <= 0) return "watchdog timeout must be > 0";
+  if (!(stop_deceleration > 0 && std::isfinite(stop_deceleration))) {
+    return fmt::format("stop deceleration {} must be > 0", stop_deceleration);
+  }
+  if (!(state_rate_hz > 0 && std::isfinite(state_rate_hz))) {
+    return fmt::format("state rate {} Hz must be > 0", state_rate_hz);
+  }
+  if (auto error = envelope.Validate(); !error.empty()) return "safety envelope: " + error;
+  return {};
 }
 
-void RowMajorFromIsometry(const Eigen::Isometry3d& pose, double* values) {
-  for (int r = 0; r < 4; ++r) {
-    for (int c = 0; c < 4; ++c) values[4 * r + c] = pose.matrix()(r, c);
-  }
-}
-
-RobotNode::RobotNode(bus::Bus& bus, RobotNodeConfig config)
+RobotNode::RobotNode(bus::Bus& bus, bus::EventLoop& loop, bus::HeartbeatPublisher& heartbeat,
+                     RobotNodeConfig config)
     : bus_(bus),
+      loop_(loop),
+      heartbeat_(heartbeat),
       config_(std::move(config)),
-      rtde_(config_.host, config_.rtde_port, config_.connect_timeout),
-      script_(config_.host, config_.secondary_port, config_.connect_timeout),
-      dashboard_(config_.host, config_.dashboard_port, config_.connect_timeout) {
-  if (auto error = config_.envelope.Validate(); !error.empty()) {
-    throw std::invalid_argument("avc-robot safety envelope: " + error);
+      acks_(bus, config_.service),
+      link_(AddressOf(config_)),
+      watchdog_(config_.watchdog_service, config_.watchdog_timeout),
+      reconnect_delay_(config_.reconnect_min) {
+  if (auto error = config_.Validate(); !error.empty()) {
+    throw std::invalid_argument("avc-robot config: " + error);
   }
-  rtde_.Handshake();
-  LogControllerKinematics();
-  subscription_ = bus_.Subscribe<Command>(
+  command_subscription_ = bus_.Subscribe<avc::robot_command_t>(
       channels::kRobotCommand,
-      [this](const Command& command, const bus::RxInfo&) { Handle(command); });
+      [this](const avc::robot_command_t& command, const bus::RxInfo&) { Handle(command); });
+  heartbeat_subscription_ = bus_.Subscribe<avc::heartbeat_t>(
+      channels::kHeartbeat,
+      [this](const avc::heartbeat_t& beat, const bus::RxInfo&) { OnHeartbeat(beat); });
+  TryConnect();
+  UpdateHeartbeat();
+  timer_ = loop_.AddTimer(
+      config_.poll_period, [this] { Tick(); }, /*repeating=*/true);
 }
 
-RobotNode::~RobotNode() { bus_.Unsubscribe(subscription_); }
+RobotNode::~RobotNode() {
+  if (timer_ != 0) loop_.CancelTimer(timer_);
+  bus_.Unsubscribe(heartbeat_subscription_);
+  bus_.Unsubscribe(command_subscription_);
+}
+
+void RobotNode::TryConnect() {
+  try {
+    link_.Connect();
+  } catch (const std::exception& error) {
+    ControllerLost(error.what());
+    return;
+  }
+  error_.clear();
+  reconnect_delay_ = config_.reconnect_min;
+  log::Info("{}: connected to the controller at {}", config_.service, config_.host);
+  LogControllerKinematics();
+}
+
+void RobotNode::ControllerLost(const std::string& what) {
+  link_.Disconnect();
+  last_state_.reset();  // a stale state must not plan the next motion
+  error_ =
+      fmt::format("controller lost: {}; reconnecting in {} ms", what, reconnect_delay_.count());
+  next_connect_ = Clock::now() + reconnect_delay_;
+  reconnect_delay_ = std::min(reconnect_delay_ * 2, config_.reconnect_max);
+  // The heartbeat publisher logs the ERROR it announces.
+  if (active_) Finish(avc::ack_t::STATUS_FAILED, "controller lost: " + what);
+  FinishModeChange(avc::ack_t::STATUS_FAILED, "controller lost: " + what);
+}
+
+void RobotNode::Tick() {
+  if (!link_.connected()) {
+    if (Clock::now() >= next_connect_) TryConnect();
+  } else {
+    try {
+      link_.CheckDashboard();
+      Poll();
+      CheckWatchdog();
+    } catch (const std::exception& error) {
+      // A broken or corrupt stream cannot be resynchronised: start over on every interface.
+      ControllerLost(error.what());
+    }
+  }
+  UpdateHeartbeat();
+}
+
+void RobotNode::UpdateHeartbeat() {
+  if (shut_down_) return;  // the runtime says STOPPING now
+  if (!error_.empty()) {
+    heartbeat_.Set(bus::ServiceState::kError, error_);
+  } else if (active_) {
+    heartbeat_.Set(bus::ServiceState::kBusy, "moving: " + active_->request_id);
+  } else {
+    heartbeat_.Set(bus::ServiceState::kReady, "connected to " + config_.host);
+  }
+}
+
+void RobotNode::OnHeartbeat(const avc::heartbeat_t& beat) {
+  if (beat.service != watchdog_.service() || !watchdog_.enabled()) return;
+  const bool healthy =
+      beat.state != avc::heartbeat_t::STATE_STOPPING && beat.state != avc::heartbeat_t::STATE_ERROR;
+  watchdog_.Heard(Clock::now(), healthy, bus::ServiceStateName(beat.state));
+  unwatched_logged_ = false;
+}
+
+void RobotNode::CheckWatchdog() {
+  if (!active_ || !active_->watched) return;
+  const std::string reason = watchdog_.StopReason(Clock::now());
+  if (reason.empty()) return;
+  link_.script().Send(StopJProgram(config_.stop_deceleration));
+  log::Error("{}: {} (request {})", config_.service, reason, active_->request_id);
+  Finish(avc::ack_t::STATUS_FAILED, reason);
+}
 
 void RobotNode::LogControllerKinematics() {
-  // The controller's calibrated DH set, logged once so a scan's log records which arm it was;
-  // poses for calibration come from actual_TCP_pose, which already includes it.
-  kinematics_ = script_.WaitForKinematics(config_.connect_timeout);
-  if (!kinematics_) {
-    avc::log::Warn("{}: no KINEMATICS_INFO from {} within {} ms", config_.service, script_.peer(),
-                   config_.connect_timeout.count());
+  // The controller's calibrated DH set, logged at every connect so a scan's log records which
+  // arm it was; poses for calibration come from actual_TCP_pose, which already includes it.
+  const auto& kinematics = link_.kinematics();
+  if (!kinematics) {
+    log::Warn("{}: no KINEMATICS_INFO from {} within {} ms", config_.service, link_.script().peer(),
+              config_.connect_timeout.count());
     return;
   }
   double largest_length_delta = 0;
   for (int i = 0; i < 6; ++i) {
     largest_length_delta =
-        std::max({largest_length_delta, std::abs(kinematics_->a[i] - config_.dh.a[i]),
-                  std::abs(kinematics_->d[i] - config_.dh.d[i])});
+        std::max({largest_length_delta, std::abs(kinematics->a[i] - config_.dh.a[i]),
+                  std::abs(kinematics->d[i] - config_.dh.d[i])});
   }
-  avc::log::Info(
+  log::Info(
       "{}: controller kinematics a=[{:.6f}] d=[{:.6f}] (largest length delta from nominal {:.6f} "
       "m)",
-      config_.service, fmt::join(kinematics_->a, ", "), fmt::join(kinematics_->d, ", "),
+      config_.service, fmt::join(kinematics->a, ", "), fmt::join(kinematics->d, ", "),
       largest_length_delta);
 }
 
-void RobotNode::Ack(const std::string& request_id, int8_t status, const std::string& reason) {
-  avc::ack_t ack;
-  ack.request_id = request_id;
-  ack.service = config_.service;
-  ack.status = status;
-  ack.reason = reason;
-  answered_[request_id] = ack;
-  bus_.Publish(channels::kAck, ack);
-}
-
-void RobotNode::Handle(const Command& command) {
-  if (command.request_id.empty()) {
-    Ack("", avc::ack_t::STATUS_REFUSED, "robot command without a request id");
-    return;
-  }
-  if (auto it = answered_.find(command.request_id); it != answered_.end()) {
-    avc::ack_t again = it->second;  // idempotent: repeat the last answer, do nothing else
-    bus_.Publish(channels::kAck, again);
-    return;
-  }
-  std::string refusal;
-  switch (command.kind) {
-    case Command::KIND_MOVE_JOINTS:
-    case Command::KIND_MOVE_LINEAR:
-      refusal = StartMotion(command);
-      if (refusal.empty()) {
-        Ack(command.request_id, avc::ack_t::STATUS_ACCEPTED, "motion sent");
-        return;
-      }
-      break;
-    case Command::KIND_STOP:
-      try {
-        script_.Send(StopJProgram(2.0));
-      } catch (const std::exception& error) {
-        Ack(command.request_id, avc::ack_t::STATUS_FAILED, error.what());
-        return;
-      }
-      if (active_) Finish(avc::ack_t::STATUS_FAILED, "stopped by request " + command.request_id);
-      Ack(command.request_id, avc::ack_t::STATUS_DONE, "stopj sent");
-      return;
-    case Command::KIND_POWER_ON:
-    case Command::KIND_BRAKE_RELEASE:
-    case Command::KIND_UNLOCK_PROTECTIVE_STOP:
-    case Command::KIND_POWER_OFF: {
-      const std::string failure = RunDashboard(command);
-      Ack(command.request_id, failure.empty() ? avc::ack_t::STATUS_DONE : avc::ack_t::STATUS_FAILED,
-          failure.empty() ? "done" : failure);
-      return;
-    }
-    default:
-      refusal = fmt::format("unknown command kind {}", command.kind);
-  }
-  Ack(command.request_id, avc::ack_t::STATUS_REFUSED, refusal);
-}
-
-std::string RobotNode::StartMotion(const Command& command) {
-  if (active_) return "busy with request " + active_->request_id;
-  if (!last_state_) return "no robot state received yet";
-  const RobotState& state = *last_state_;
-  if (state.robot_mode != RobotMode::kRunning) {
-    return fmt::format("robot mode is {}, not RUNNING", RobotModeName(state.robot_mode));
-  }
-  if (state.safety_mode != SafetyMode::kNormal) {
-    return fmt::format("safety mode is {}", SafetyModeName(state.safety_mode));
-  }
-  const JointVector current = ToJoints(state.actual_q);
-  const bool joints = command.kind == Command::KIND_MOVE_JOINTS;
-  const double speed = command.speed != 0
-                           ? command.speed
-                           : (joints ? config_.default_joint_speed : config_.default_linear_speed);
-  const double acceleration =
-      command.acceleration != 0
-          ? command.acceleration
-          : (joints ? config_.default_joint_acceleration : config_.default_linear_acceleration);
-  std::string refusal;
-  std::string program;
-  std::optional<MotionMonitor> monitor;
-  if (joints) {
-    const JointVector target = Eigen::Map<const JointVector>(command.q);
-    refusal = CheckJointMove(config_.envelope, config_.dh, current, target, speed, acceleration);
-    if (refusal.empty()) {
-      const Joints q = {target[0], target[1], target[2], target[3], target[4], target[5]};
-      program = MoveJProgram(q, acceleration, speed);
-      monitor = MotionMonitor::ForJoints(q, config_.tolerance);
-    }
-  } else {
-    const Eigen::Isometry3d target = IsometryFromRowMajor(command.T_base_flange);
-    refusal = CheckLinearMove(config_.envelope, config_.dh, current, target, speed, acceleration);
-    if (refusal.empty()) {
-      const PoseVector pose = VectorFromPose(target);
-      program = MoveLProgram(pose, acceleration, speed);
-      monitor = MotionMonitor::ForPose(pose, config_.tolerance);
-    }
-  }
-  if (!refusal.empty()) return "outside the safety envelope: " + refusal;
-  try {
-    script_.Send(program);
-  } catch (const std::exception& error) {
-    return error.what();
-  }
-  active_ = ActiveMotion{command.request_id, *monitor, Clock::now() + config_.motion_timeout, 0};
-  return {};
-}
-
-std::string RobotNode::RunDashboard(const Command& command) {
-  try {
-    switch (command.kind) {
-      case Command::KIND_POWER_ON:
-        dashboard_.PowerOn();
-        break;
-      case Command::KIND_BRAKE_RELEASE:
-        dashboard_.BrakeRelease();
-        break;
-      case Command::KIND_UNLOCK_PROTECTIVE_STOP:
-        dashboard_.UnlockProtectiveStop();
-        break;
-      default:
-        dashboard_.PowerOff();
-        break;
-    }
-  } catch (const std::exception& error) {
-    return error.what();
-  }
-  return {};
-}
-
-void RobotNode::Finish(int8_t status, std::string reason) {
-  const std::string request_id = active_->request_id;
-  active_.reset();
-  Ack(request_id, status, reason);
-}
-
 void RobotNode::Poll() {
-  try {
-    for (const auto& message : script_.Poll(Milliseconds(0))) {
-      if (active_ && message.message_type == primary::kRuntimeException) {
-        Finish(avc::ack_t::STATUS_FAILED, "controller runtime error: " + message.text);
+  for (const auto& message : link_.script().Poll(Milliseconds(0))) {
+    if (active_ && message.message_type == primary::kRuntimeException) {
+      Finish(avc::ack_t::STATUS_FAILED, "controller runtime error: " + message.text);
+    }
+  }
+  while (auto sample = link_.rtde().Receive(Milliseconds(0))) {
+    last_state_ = sample->state;
+    if (active_) {
+      const MotionStatus status = active_->monitor.Update(sample->state);
+      if (status == MotionStatus::kSafetyStop || status == MotionStatus::kNotRunning) {
+        Finish(avc::ack_t::STATUS_FAILED, active_->monitor.detail());
+      } else if (status == MotionStatus::kReached &&
+                 ++active_->reached_in_a_row >= kSettleSamples) {
+        Finish(avc::ack_t::STATUS_DONE, active_->monitor.detail());
+      } else if (status != MotionStatus::kReached) {
+        active_->reached_in_a_row = 0;
       }
     }
-    while (auto sample = rtde_.Receive(Milliseconds(0))) {
-      last_state_ = sample->state;
-      if (active_) {
-        const MotionStatus status = active_->monitor.Update(sample->state);
-        if (status == MotionStatus::kSafetyStop || status == MotionStatus::kNotRunning) {
-          Finish(avc::ack_t::STATUS_FAILED, active_->monitor.detail());
-        } else if (status == MotionStatus::kReached &&
-                   ++active_->reached_in_a_row >= kSettleSamples) {
-          Finish(avc::ack_t::STATUS_DONE, active_->monitor.detail());
-        } else if (status != MotionStatus::kReached) {
-          active_->reached_in_a_row = 0;
-        }
-      }
-      if (sample->state.timestamp - last_published_time_ >= 1.0 / config_.state_rate_hz - 1e-9) {
-        PublishState(sample->state);
-        last_published_time_ = sample->state.timestamp;
-      }
+    if (sample->state.timestamp - last_published_time_ >= 1.0 / config_.state_rate_hz - 1e-9) {
+      PublishState(sample->state);
+      last_published_time_ = sample->state.timestamp;
     }
-    if (active_ && Clock::now() > active_->deadline) {
-      Finish(avc::ack_t::STATUS_FAILED,
-             fmt::format("motion not finished within {} ms: {}", config_.motion_timeout.count(),
-                         active_->monitor.detail()));
-    }
-  } catch (const ConnectionError& error) {
-    if (active_) Finish(avc::ack_t::STATUS_FAILED, error.what());
-    throw;
+  }
+  CheckModeChange();
+  if (active_ && Clock::now() > active_->deadline) {
+    Finish(avc::ack_t::STATUS_FAILED,
+           fmt::format("motion not finished within {} ms: {}", config_.motion_timeout.count(),
+                       active_->monitor.detail()));
   }
 }
 
-void RobotNode::PublishState(const RobotState& state) {
-  avc::robot_state_t message;
-  for (int i = 0; i < 6; ++i) {
-    message.q[i] = state.actual_q[i];
-    message.qd[i] = state.actual_qd[i];
+void RobotNode::Shutdown() {
+  if (timer_ != 0) loop_.CancelTimer(timer_);
+  timer_ = 0;
+  if (active_ && link_.connected()) {
+    try {
+      link_.script().Send(StopJProgram(config_.stop_deceleration));
+      log::Info("{}: arm stopped for shutdown", config_.service);
+    } catch (const std::exception& error) {
+      log::Error("{}: could not stop the arm at shutdown: {}", config_.service, error.what());
+    }
   }
-  RowMajorFromIsometry(PoseFromVector(state.actual_tcp_pose), message.T_base_flange);
-  message.robot_mode = static_cast<int8_t>(state.robot_mode);
-  message.safety_mode = static_cast<int8_t>(state.safety_mode);
-  double speed = 0;
-  for (double qd : state.actual_qd) speed = std::max(speed, std::abs(qd));
-  message.moving = speed > config_.tolerance.still_rad_s;
-  message.protective_stop = state.safety_mode == SafetyMode::kProtectiveStop;
-  message.active_request_id = active_ ? active_->request_id : "";
-  bus_.Publish(channels::kRobotState, message);
+  if (active_) Finish(avc::ack_t::STATUS_FAILED, config_.service + " stopping");
+  FinishModeChange(avc::ack_t::STATUS_FAILED, config_.service + " stopping");
+  link_.Disconnect();
+  shut_down_ = true;
+  error_ = config_.service + " stopping";
 }
 
 }  // namespace avc::robot

@@ -22,13 +22,21 @@ void ScriptClient::Send(const std::string& program) {
   }
 }
 
+void ScriptClient::Absorb(primary::RobotStateMessage state) {
+  ++robot_states_received_;
+  if (state.mode) mode_ = state.mode;
+  if (state.joints) joints_ = state.joints;
+  if (state.cartesian) cartesian_ = state.cartesian;
+  if (state.kinematics) kinematics_ = state.kinematics;
+}
+
 std::vector<primary::RobotMessage> ScriptClient::Poll(Milliseconds timeout) {
   std::vector<primary::RobotMessage> messages = std::exchange(unread_, {});
   const auto deadline = Clock::now() + timeout;
   while (true) {
     while (auto package = framer_.Next()) {
       if (package->type == primary::kRobotStateType) {
-        if (auto info = primary::FindKinematicsInfo(package->body)) kinematics_ = info;
+        Absorb(primary::DecodeRobotState(package->body));
         continue;
       }
       if (package->type != primary::kRobotMessageType) continue;

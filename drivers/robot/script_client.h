@@ -1,14 +1,16 @@
 #pragma once
 
-// Sends URScript programs to the secondary interface (30002) and reads back what the controller
-// says about them: runtime exceptions and text messages. Keeps the socket open and drains it
-// (the controller may discard a script whose socket closes before it read the stream).
+// Sends URScript programs to the secondary interface (30002; the primary 30001 works the same) and
+// reads back what the controller says: runtime exceptions and text messages, and the 10 Hz
+// ROBOT_STATE stream. Keeps the socket open and drains it (the controller may discard a script
+// whose socket closes before it read the stream).
 
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "drivers/robot/primary_protocol.h"
+#include "drivers/robot/primary_robot_state.h"
 #include "drivers/robot/tcp_socket.h"
 
 namespace avc::robot {
@@ -27,17 +29,29 @@ class ScriptClient {
   // its ROBOT_STATE stream); filled by Poll.
   const std::optional<primary::VersionMessage>& version() const { return version_; }
   const std::optional<primary::KinematicsInfo>& kinematics() const { return kinematics_; }
+  // The newest ROBOT_MODE_DATA / JOINT_DATA / CARTESIAN_INFO of the ROBOT_STATE stream.
+  const std::optional<primary::RobotModeData>& robot_mode_data() const { return mode_; }
+  const std::optional<primary::JointData>& joint_data() const { return joints_; }
+  const std::optional<primary::CartesianInfo>& cartesian_info() const { return cartesian_; }
+  // ROBOT_STATE messages decoded so far.
+  int robot_states_received() const { return robot_states_received_; }
   // Polls until KINEMATICS_INFO arrived or `timeout` passed; returns it when it did.
   std::optional<primary::KinematicsInfo> WaitForKinematics(Milliseconds timeout);
 
   const std::string& peer() const { return stream_.peer(); }
 
  private:
+  void Absorb(primary::RobotStateMessage state);
+
   TcpStream stream_;
   Milliseconds timeout_;
   primary::PackageFramer framer_;
   std::optional<primary::VersionMessage> version_;
   std::optional<primary::KinematicsInfo> kinematics_;
+  std::optional<primary::RobotModeData> mode_;
+  std::optional<primary::JointData> joints_;
+  std::optional<primary::CartesianInfo> cartesian_;
+  int robot_states_received_ = 0;
   std::vector<primary::RobotMessage> unread_;
 };
 

@@ -33,12 +33,18 @@ sim::ur5::Ur5EmulatorOptions TestOptions() {
   sim::ur5::Ur5EmulatorOptions options;
   options.cell = sim::PerturbedCell(11);
   options.rtde_port = 0;
+  options.primary_port = 0;
   options.secondary_port = 0;
   options.dashboard_port = 0;
-  options.time_scale = 10;
   options.encoder_noise_rad = kNoise;
   options.seed = 5;
   return options;
+}
+
+// Simulated time runs 10x faster than real time.
+std::unique_ptr<sim::ur5::Ur5Emulator> StartEmulator(const sim::ur5::Ur5EmulatorOptions& options) {
+  return std::make_unique<sim::ur5::Ur5Emulator>(options,
+                                                 std::make_shared<sim::ScaledEmulatorClock>(10));
 }
 
 JointVector ToJoints(const std::array<double, 6>& q) {
@@ -56,7 +62,7 @@ std::string ErrorOf(const std::function<void()>& action) {
 
 class RobotClientEmulatorTest : public ::testing::Test {
  protected:
-  void SetUp() override { emulator_ = std::make_unique<sim::ur5::Ur5Emulator>(TestOptions()); }
+  void SetUp() override { emulator_ = StartEmulator(TestOptions()); }
 
   robot::RtdeClient StreamingClient() {
     robot::RtdeClient client(kHost, emulator_->rtde_port());
@@ -86,13 +92,31 @@ TEST_F(RobotClientEmulatorTest, NegotiatesVersion2AndReadsTheCb3Version) {
 TEST(RobotClientEmulator, FallsBackToVersion1OnAnOldController) {
   auto options = TestOptions();
   options.max_protocol_version = 1;
-  sim::ur5::Ur5Emulator emulator(options);
-  robot::RtdeClient client(kHost, emulator.rtde_port());
+  auto emulator = StartEmulator(options);
+  robot::RtdeClient client(kHost, emulator->rtde_port());
   client.Handshake();
   EXPECT_EQ(client.protocol_version(), 1);
   const auto sample = client.Receive(Milliseconds(2000));
   ASSERT_TRUE(sample);
   EXPECT_EQ(sample->state.robot_mode, RobotMode::kPowerOff);
+}
+
+TEST(RobotClientEmulator, SteppedClockGivesExactControllerTimestamps) {
+  // Every clock read advances 1 ms, so the arm runs as fast as the loop turns and the data
+  // package timestamps sit exactly on the 8 ms control grid.
+  auto clock = std::make_shared<sim::SteppedEmulatorClock>(0.001);
+  sim::ur5::Ur5Emulator emulator(TestOptions(), clock);
+  robot::RtdeClient client(kHost, emulator.rtde_port());
+  client.Handshake();
+  auto previous = client.Receive(Milliseconds(2000));
+  ASSERT_TRUE(previous);
+  for (int i = 0; i < 20; ++i) {
+    const auto sample = client.Receive(Milliseconds(2000));
+    ASSERT_TRUE(sample);
+    EXPECT_NEAR(sample->state.timestamp - previous->state.timestamp, 0.008, 1e-9);
+    previous = sample;
+  }
+  EXPECT_LE(previous->state.timestamp, clock->NowSeconds());
 }
 
 TEST_F(RobotClientEmulatorTest, UnknownOutputVariableIsReportedByName) {
@@ -341,8 +365,8 @@ TEST_F(RobotClientEmulatorTest, SocketDropIsReportedAsADisconnect) {
 TEST(RobotClientEmulator, ConnectingToAClosedPortNamesIt) {
   uint16_t port = 0;
   {
-    sim::ur5::Ur5Emulator emulator(TestOptions());
-    port = emulator.rtde_port();
+    auto emulator = StartEmulator(TestOptions());
+    port = emulator->rtde_port();
   }
   const std::string error = ErrorOf([&] { robot::RtdeClient client(kHost, port); });
   EXPECT_NE(error.find(fmt::format("127.0.0.1:{}", port)), std::string::npos) << error;

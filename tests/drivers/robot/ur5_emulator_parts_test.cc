@@ -12,6 +12,7 @@
 #include "drivers/robot/dashboard_client.h"
 #include "drivers/robot/motion_monitor.h"
 #include "drivers/robot/primary_protocol.h"
+#include "drivers/robot/primary_robot_state.h"
 #include "drivers/robot/urscript.h"
 #include "sim/cell/perturbation.h"
 #include "sim/emulators/ur5/trapezoid_profile.h"

@@ -1,0 +1,82 @@
+// avc robot: the avc-robot service, the UR5 driver. Connects to the controller (RTDE 30004,
+// secondary 30002, dashboard 29999), publishes ROBOT_STATE and executes ROBOT_COMMAND within a
+// safety envelope. A lost controller is reconnected (heartbeat ERROR meanwhile), never a reason
+// to exit; SIGTERM stops any motion and ends the process cleanly.
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "core/bus/service_runtime.h"
+#include "drivers/robot/robot_node.h"
+#include "tools/avc/bus_flags.h"
+#include "tools/avc/commands.h"
+#include "tools/avc/run_guarded.h"
+
+namespace avc::cli {
+namespace {
+
+struct RobotArgs {
+  robot::RobotNodeConfig config;
+  std::optional<double> table_z;
+  std::vector<double> keep_out;
+  int64_t watchdog_timeout_ms = 500;
+  bus::BusFlags bus;
+};
+
+int RunRobot(RobotArgs args) {
+  robot::RobotNodeConfig& config = args.config;
+  config.envelope.table_z_base_m = args.table_z;
+  if (args.keep_out.size() == 5) {
+    config.envelope.keep_out =
+        robot::KeepOutCylinder{Eigen::Vector2d(args.keep_out[0], args.keep_out[1]),
+                               args.keep_out[2], args.keep_out[3], args.keep_out[4]};
+  }
+  config.watchdog_timeout = std::chrono::milliseconds(args.watchdog_timeout_ms);
+  bus::ServiceRuntime runtime(config.service, args.bus);
+  robot::RobotNode node(runtime.bus(), runtime.loop(), runtime.heartbeat(), config);
+  runtime.OnStop([&] { node.Shutdown(); });
+  return runtime.Run();
+}
+
+}  // namespace
+
+void RegisterRobot(CLI::App& root, int* exit_code) {
+  auto args = std::make_shared<RobotArgs>();
+  robot::RobotNodeConfig& c = args->config;
+  args->watchdog_timeout_ms = c.watchdog_timeout.count();
+  CLI::App* command = root.add_subcommand(
+      "robot",
+      "Run the avc-robot service: the UR5 (CB3) driver.\n"
+      "State comes from RTDE (30004) at the controller's rate; motions are URScript programs on\n"
+      "the secondary port (30002), checked against the safety envelope before anything is sent;\n"
+      "power, brakes and protective stops go through the dashboard (29999).\n"
+      "Real arm: avc robot --host 192.168.1.10   Simulated cell: avc robot --host 127.0.0.1");
+  command->add_option("--host", c.host, "controller address")->capture_default_str();
+  command->add_option("--rtde-port", c.rtde_port, "RTDE port")->capture_default_str();
+  command->add_option("--secondary-port", c.secondary_port, "secondary (script) port")
+      ->capture_default_str();
+  command->add_option("--dashboard-port", c.dashboard_port, "dashboard port")
+      ->capture_default_str();
+  command->add_option("--table-z", args->table_z, "table plane height in the base frame, m");
+  command
+      ->add_option("--keep-out", args->keep_out,
+                   "keep-out cylinder: x y radius z_min z_max (base frame, m)")
+      ->expected(5);
+  command->add_option("--max-joint-speed", c.envelope.max_joint_speed_rad_s, "rad/s")
+      ->capture_default_str();
+  command->add_option("--max-linear-speed", c.envelope.max_linear_speed_m_s, "m/s")
+      ->capture_default_str();
+  command
+      ->add_option("--watchdog-service", c.watchdog_service,
+                   "service whose heartbeat guards motions (\"\" disables the watchdog)")
+      ->capture_default_str();
+  command
+      ->add_option("--watchdog-timeout-ms", args->watchdog_timeout_ms,
+                   "heartbeat silence after which a guarded motion is stopped")
+      ->capture_default_str();
+  AddBusFlags(command, &args->bus);
+  SetGuardedRun(command, exit_code, [args] { return RunRobot(*args); });
+}
+
+}  // namespace avc::cli
