@@ -1,6 +1,7 @@
 #include "bench/registry.h"
 
 #include "bench/bus/bus_bench.h"
+#include "bench/devices/devices_bench.h"
 #include "bench/render/render_bench.h"
 
 namespace avc::bench {
@@ -16,8 +17,23 @@ const std::vector<Benchmark>& AllBenchmarks() {
        "preset and a 100k-triangle plant, 1/2x2/3x3 samples, 1 vs 2 threads, 1x/4x/16x pixels, "
        "peak memory",
        RunRenderBenchmark},
+      {"devices",
+       "time per captured view in the simulated cell (move, rotate, capture, transfer) with "
+       "every driver a separate process on the real protocols, at real time and a faster clock",
+       RunDevicesBenchmark},
   };
   return benchmarks;
+}
+
+std::optional<int> ParseBenchmarkArguments(CLI::App& app, const std::vector<std::string>& args) {
+  try {
+    // CLI11 takes a vector of arguments last-first.
+    std::vector<std::string> reversed(args.rbegin(), args.rend());
+    app.parse(reversed);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  return std::nullopt;
 }
 
 const Benchmark* FindBenchmark(const std::string& name) {

@@ -2,7 +2,9 @@
 
 // The benchmarks `avc bench NAME` can run.
 
+#include <CLI/CLI.hpp>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +19,10 @@ struct Benchmark {
 };
 
 const std::vector<Benchmark>& AllBenchmarks();
+
+// Parses a benchmark's arguments (those after NAME) into app. Returns nullopt to go on, or the
+// exit code when parsing ended the run (--help, or a bad argument already reported).
+std::optional<int> ParseBenchmarkArguments(CLI::App& app, const std::vector<std::string>& args);
 const Benchmark* FindBenchmark(const std::string& name);
 
 }  // namespace avc::bench

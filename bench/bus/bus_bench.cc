@@ -16,6 +16,7 @@
 
 #include "bench/bus/bus_bench_phase.h"
 #include "bench/bus/bus_bench_receiver.h"
+#include "bench/registry.h"
 #include "core/bus/channels.h"
 #include "core/bus/heartbeat.h"
 #include "core/launch/child_process.h"
@@ -296,12 +297,7 @@ int RunBusBenchmark(const std::vector<std::string>& arguments) {
   app.add_option("--lcm-url", args.receiver.bus.lcm_url, "internal")->group("");
   app.add_option("--bulk-url", args.receiver.bus.bulk_url, "internal")->group("");
   app.add_option("--cell", args.receiver.bus.cell, "internal")->group("");
-  try {
-    std::vector<std::string> reversed(arguments.rbegin(), arguments.rend());
-    app.parse(reversed);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e);
-  }
+  if (const auto exit_code = ParseBenchmarkArguments(app, arguments)) return *exit_code;
   if (args.role == "receiver") return RunBusBenchReceiver(args.receiver);
   return RunSender(args);
 }

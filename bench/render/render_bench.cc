@@ -10,6 +10,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <thread>
 
+#include "bench/registry.h"
 #include "bench/render/render_bench_case.h"
 #include "sim/render/renderer.h"
 #include "sim/scene/plant.h"
@@ -222,12 +223,7 @@ int RunRenderBenchmark(const std::vector<std::string>& arguments) {
   app.add_option("--seed", args.seed, "plant seed")->capture_default_str();
   app.add_option("--save", args.save_dir, "write colour, label and depth PNGs of a view per plant");
   app.add_flag("--json", args.json, "print the results as one JSON line at the end");
-  try {
-    std::vector<std::string> reversed(arguments.rbegin(), arguments.rend());
-    app.parse(reversed);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e);
-  }
+  if (const auto exit_code = ParseBenchmarkArguments(app, arguments)) return *exit_code;
   return Run(args);
 }
 

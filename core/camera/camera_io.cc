@@ -41,28 +41,25 @@ std::string CheckCamera(const NamedCamera& named) {
 
 }  // namespace
 
+nlohmann::ordered_json CameraToJson(const NamedCamera& named) {
+  if (const std::string problem = CheckCamera(named); !problem.empty()) {
+    throw std::invalid_argument(fmt::format("camera '{}': {}", named.name, problem));
+  }
+  const Intrinsics& k = named.camera.intrinsics;
+  std::vector<double> pose;
+  const Eigen::Matrix4d m = named.camera.T_cam_world.matrix();
+  for (int r = 0; r < 4; ++r) {
+    for (int c = 0; c < 4; ++c) pose.push_back(m(r, c));
+  }
+  return {
+      {"name", named.name}, {"width", k.width}, {"height", k.height}, {"fx", k.fx},
+      {"fy", k.fy},         {"cx", k.cx},       {"cy", k.cy},         {"distortion", k.distortion},
+      {"T_cam_world", pose}};
+}
+
 void WriteCamerasJson(const fs::path& path, const std::vector<NamedCamera>& cameras) {
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
-  for (const NamedCamera& named : cameras) {
-    if (const std::string problem = CheckCamera(named); !problem.empty()) {
-      throw std::invalid_argument(fmt::format("camera '{}': {}", named.name, problem));
-    }
-    const Intrinsics& k = named.camera.intrinsics;
-    std::vector<double> pose;
-    const Eigen::Matrix4d m = named.camera.T_cam_world.matrix();
-    for (int r = 0; r < 4; ++r) {
-      for (int c = 0; c < 4; ++c) pose.push_back(m(r, c));
-    }
-    list.push_back({{"name", named.name},
-                    {"width", k.width},
-                    {"height", k.height},
-                    {"fx", k.fx},
-                    {"fy", k.fy},
-                    {"cx", k.cx},
-                    {"cy", k.cy},
-                    {"distortion", k.distortion},
-                    {"T_cam_world", pose}});
-  }
+  for (const NamedCamera& named : cameras) list.push_back(CameraToJson(named));
   std::ofstream out = OpenForWriting(path);
   out << nlohmann::ordered_json{{"cameras", list}}.dump(1) << "\n";
   CheckWritten(out, path);

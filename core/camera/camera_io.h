@@ -9,6 +9,7 @@
 // Readers throw std::runtime_error naming the file and line or entry of any problem.
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,9 @@ struct NamedCamera {
   std::string name;  // the image file name, relative to the images folder
   Camera camera;
 };
+
+// One cameras.json entry. Throws std::invalid_argument for an unusable camera.
+nlohmann::ordered_json CameraToJson(const NamedCamera& camera);
 
 void WriteCamerasJson(const std::filesystem::path& path, const std::vector<NamedCamera>& cameras);
 std::vector<NamedCamera> ReadCamerasJson(const std::filesystem::path& path);

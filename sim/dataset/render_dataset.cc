@@ -59,6 +59,8 @@ void PrepareOutput(const fs::path& output) {
   for (const char* sub : {"images", "labels", "depth"}) fs::create_directories(output / sub);
 }
 
+}  // namespace
+
 Scene MakeScene(const RenderDatasetOptions& options) {
   if (!options.mesh_file.empty()) {
     return SceneFromMesh(geometry::ReadMesh(options.mesh_file), options.placement);
@@ -79,6 +81,8 @@ CellTruth MakeCell(const RenderDatasetOptions& options) {
   }
   return cell;
 }
+
+namespace {
 
 // The distance at which the plant, seen from `elevation`, spans the image: its turning radius
 // across, its height (foreshortened) plus its footprint (seen from above) up and down, plus a

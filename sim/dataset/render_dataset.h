@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/cell/cell_truth.h"
 #include "sim/render/render_options.h"
 #include "sim/scene/mesh_scene.h"
 #include "sim/scene/plant.h"
@@ -62,6 +63,11 @@ struct RenderDatasetSummary {
 };
 
 using ProgressCallback = std::function<void(int done, int total, const std::string& what)>;
+
+// The scene the options describe (a preset plant or a placed mesh) and the cell they render it
+// in (nominal or perturbed, image size scaled); shared with the live simulated cell.
+Scene MakeScene(const RenderDatasetOptions& options);
+CellTruth MakeCell(const RenderDatasetOptions& options);
 
 // Throws std::runtime_error / std::invalid_argument naming the problem (bad options, an
 // unreadable mesh, a view the arm cannot reach, an output that cannot be written).

@@ -121,8 +121,7 @@ void RegisterTurntable(CLI::App& root, int* exit_code) {
   list->add_option("--watch", list_args->watch_s,
                    "then report arrivals and departures for this many seconds");
   SetGuardedRun(list, exit_code, [list_args] { return RunList(*list_args); });
-  SetGuardedRun(command, exit_code, [args, list, speed, exit_code] {
-    if (list->parsed()) return *exit_code;  // `avc turntable list` ran instead of the service
+  SetGuardedRun(command, exit_code, [args, speed] {
     // Emulated, the driver would otherwise slow the emulator down to its own default.
     if (args->emulate && speed->count() == 0) args->speed_deg_s = args->emulate_speed_deg_s;
     return RunTurntable(*args);

@@ -16,7 +16,10 @@ void RegisterBench(CLI::App& root, int* exit_code);
 void RegisterStatus(CLI::App& root, int* exit_code);
 void RegisterSpy(CLI::App& root, int* exit_code);
 void RegisterSim(CLI::App& root, int* exit_code);
+void RegisterSimCell(CLI::App& sim, int* exit_code);  // under `avc sim`
 void RegisterEval(CLI::App& root, int* exit_code);
 void RegisterTurntable(CLI::App& root, int* exit_code);
+void RegisterCamera(CLI::App& root, int* exit_code);
+void RegisterRobot(CLI::App& root, int* exit_code);
 
 }  // namespace avc::cli

@@ -45,6 +45,8 @@ int main(int argc, char** argv) {
   avc::cli::RegisterBench(app, &exit_code);
   avc::cli::RegisterEval(app, &exit_code);
   avc::cli::RegisterTurntable(app, &exit_code);
+  avc::cli::RegisterRobot(app, &exit_code);
+  avc::cli::RegisterCamera(app, &exit_code);
   ShortenListings(app);
   try {
     app.parse(argc, argv);

@@ -9,6 +9,8 @@
 
 namespace avc::cli {
 
+// Runs `run` when the command is invoked (not when one of its subcommands is), turning an
+// exception into "avc NAME: message" on stderr and exit code 1.
 void SetGuardedRun(CLI::App* command, int* exit_code, std::function<int()> run);
 
 }  // namespace avc::cli

@@ -1,0 +1,144 @@
+#include "bench/devices/cell_client.h"
+
+#include <fmt/format.h>
+
+#include <avc/capture_request_t.hpp>
+#include <avc/robot_state_t.hpp>
+#include <stdexcept>
+
+#include "core/bus/channels.h"
+#include "core/bus/heartbeat.h"
+#include "core/util/clock.h"
+
+namespace avc::bench {
+namespace {
+
+int64_t WallMicros() { return SystemClock().NowMicros(); }
+
+}  // namespace
+
+CellClient::CellClient(bus::Bus& bus, bus::EventLoop& loop) : bus_(bus), loop_(loop) {
+  subscriptions_.push_back(
+      bus_.Subscribe<avc::ack_t>(channels::kAck, [this](const avc::ack_t& ack, const bus::RxInfo&) {
+        heard_.insert(ack.request_id);
+        if (ack.status != avc::ack_t::STATUS_ACCEPTED) final_acks_[ack.request_id] = ack;
+      }));
+  subscriptions_.push_back(bus_.Subscribe<avc::heartbeat_t>(
+      channels::kHeartbeat,
+      [this](const avc::heartbeat_t& beat, const bus::RxInfo&) { health_[beat.service] = beat; }));
+  subscriptions_.push_back(bus_.Subscribe<avc::robot_state_t>(
+      channels::kRobotState, [this](const avc::robot_state_t& state, const bus::RxInfo&) {
+        for (int i = 0; i < 6; ++i) last_joints_[i] = state.q[i];
+      }));
+  receiver_ = std::make_unique<products::ProductReceiver>(
+      bus_, "avc-bench", "PRODUCT/IMAGE",
+      [this](const products::Product& product, const bus::RxInfo&) {
+        products_[product.name] = {product, WallMicros()};
+      });
+}
+
+CellClient::~CellClient() {
+  for (const auto id : subscriptions_) bus_.Unsubscribe(id);
+}
+
+void CellClient::WaitReady(const std::vector<std::string>& services,
+                           std::chrono::milliseconds timeout) {
+  const auto all_ready = [&] {
+    for (const std::string& service : services) {
+      const auto it = health_.find(service);
+      if (it == health_.end() || it->second.state != avc::heartbeat_t::STATE_READY) return false;
+    }
+    return true;
+  };
+  if (loop_.RunUntil(all_ready, timeout)) return;
+  std::string missing;
+  for (const std::string& service : services) {
+    const auto it = health_.find(service);
+    missing += it == health_.end()
+                   ? fmt::format("\n  {}: never heard", service)
+                   : fmt::format("\n  {}: {} {}", service, bus::ServiceStateName(it->second.state),
+                                 it->second.detail);
+  }
+  throw std::runtime_error("services not ready after " + std::to_string(timeout.count()) +
+                           " ms:" + missing);
+}
+
+std::string CellClient::NextId(const std::string& what) {
+  return fmt::format("bench-{}-{}", what, next_id_++);
+}
+
+double CellClient::SendUntilDone(const std::string& id, const std::function<void()>& send,
+                                 std::chrono::milliseconds timeout) {
+  const int64_t sent_us = MonotonicMicros();
+  for (int attempt = 0; attempt < 5; ++attempt) {
+    send();
+    if (loop_.RunUntil([&] { return heard_.count(id) != 0; }, std::chrono::milliseconds(1000))) {
+      break;
+    }
+  }
+  if (!loop_.RunUntil([&] { return final_acks_.count(id) != 0; }, timeout)) {
+    throw std::runtime_error(fmt::format("no answer to '{}' within {} ms", id, timeout.count()));
+  }
+  const avc::ack_t& ack = final_acks_.at(id);
+  if (ack.status != avc::ack_t::STATUS_DONE) {
+    throw std::runtime_error(fmt::format(
+        "{} {} '{}': {}", ack.service,
+        ack.status == avc::ack_t::STATUS_REFUSED ? "refused" : "failed", id, ack.reason));
+  }
+  return (MonotonicMicros() - sent_us) * 1e-6;
+}
+
+double CellClient::Robot(int8_t kind, std::chrono::milliseconds timeout) {
+  avc::robot_command_t command{};
+  command.request_id = NextId("robot");
+  command.kind = kind;
+  return SendUntilDone(
+      command.request_id, [&] { bus_.Publish(channels::kRobotCommand, command); }, timeout);
+}
+
+double CellClient::MoveJoints(const kinematics::JointVector& q, std::chrono::milliseconds timeout) {
+  avc::robot_command_t command{};
+  command.request_id = NextId("move");
+  command.kind = avc::robot_command_t::KIND_MOVE_JOINTS;
+  for (int i = 0; i < 6; ++i) command.q[i] = q[i];
+  return SendUntilDone(
+      command.request_id, [&] { bus_.Publish(channels::kRobotCommand, command); }, timeout);
+}
+
+double CellClient::TurntableGoto(double angle_rad, std::chrono::milliseconds timeout) {
+  avc::turntable_command_t command{};
+  command.request_id = NextId("table");
+  command.kind = avc::turntable_command_t::KIND_GOTO;
+  command.angle = angle_rad;
+  return SendUntilDone(
+      command.request_id, [&] { bus_.Publish(channels::kTurntableCommand, command); }, timeout);
+}
+
+CapturedView CellClient::Capture(const std::string& image_id, int8_t encoding,
+                                 std::chrono::milliseconds timeout) {
+  avc::capture_request_t request{};
+  request.request_id = NextId("capture");
+  request.image_id = image_id;
+  request.encoding = encoding;
+  const int64_t sent_wall = WallMicros();
+  CapturedView view;
+  view.request_to_done_s = SendUntilDone(
+      request.request_id, [&] { bus_.Publish(channels::kCaptureRequest, request); }, timeout);
+  const auto found = std::find_if(products_.begin(), products_.end(), [&](const auto& entry) {
+    return entry.first.rfind("images/" + image_id + ".", 0) == 0;
+  });
+  if (found == products_.end()) {
+    throw std::runtime_error("the camera said DONE but image " + image_id + " never arrived");
+  }
+  const auto& [product, received_wall] = found->second;
+  if (view.image.decode(product.payload.data(), 0, static_cast<int>(product.payload.size())) < 0) {
+    throw std::runtime_error("image " + image_id + " does not decode as image_t");
+  }
+  // Both ends stamp with this machine's wall clock.
+  view.request_to_sent_s = (product.utime - sent_wall) * 1e-6;
+  view.sent_to_received_s = (received_wall - product.utime) * 1e-6;
+  products_.erase(found);
+  return view;
+}
+
+}  // namespace avc::bench

@@ -1,0 +1,75 @@
+#pragma once
+
+// Drives a cell over the bus the way the orchestrator will: a command, then its ack; a capture
+// request, then the image product. Every call runs the event loop until the answer comes and
+// times it; a refusal, a failure or a timeout throws with the service's reason.
+
+#include <avc/ack_t.hpp>
+#include <avc/heartbeat_t.hpp>
+#include <avc/image_t.hpp>
+#include <avc/robot_command_t.hpp>
+#include <avc/turntable_command_t.hpp>
+#include <chrono>
+#include <functional>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "core/bus/bus.h"
+#include "core/bus/event_loop.h"
+#include "core/kinematics/dh_parameters.h"
+#include "core/products/product_receiver.h"
+
+namespace avc::bench {
+
+struct CapturedView {
+  avc::image_t image;
+  double request_to_sent_s = 0;   // camera side: settings, exposure, render, download, packaging
+  double sent_to_received_s = 0;  // the product over the bulk bus
+  double request_to_done_s = 0;   // until the camera's DONE (product acknowledged)
+};
+
+class CellClient {
+ public:
+  CellClient(bus::Bus& bus, bus::EventLoop& loop);
+  ~CellClient();
+  CellClient(const CellClient&) = delete;
+  CellClient& operator=(const CellClient&) = delete;
+
+  // Runs the loop until every service reports READY. Throws std::runtime_error naming the ones
+  // that did not, with their last heartbeat detail.
+  void WaitReady(const std::vector<std::string>& services, std::chrono::milliseconds timeout);
+
+  // Each returns the seconds from sending to DONE.
+  double MoveJoints(const kinematics::JointVector& q, std::chrono::milliseconds timeout);
+  double Robot(int8_t kind, std::chrono::milliseconds timeout);  // power, brakes, ...
+  double TurntableGoto(double angle_rad, std::chrono::milliseconds timeout);
+  CapturedView Capture(const std::string& image_id, int8_t encoding,
+                       std::chrono::milliseconds timeout);
+
+  // Joints of the last ROBOT_STATE (zeros before one arrived).
+  kinematics::JointVector last_joints() const { return last_joints_; }
+
+ private:
+  std::string NextId(const std::string& what);
+  // Publishes with `send` until the service acknowledges `id` at all (a datagram can be lost;
+  // re-sending an id is harmless), then runs the loop until it is DONE. Returns the seconds
+  // from the first send.
+  double SendUntilDone(const std::string& id, const std::function<void()>& send,
+                       std::chrono::milliseconds timeout);
+
+  bus::Bus& bus_;
+  bus::EventLoop& loop_;
+  std::vector<bus::Bus::SubscriptionId> subscriptions_;
+  std::unique_ptr<products::ProductReceiver> receiver_;
+  std::map<std::string, avc::ack_t> final_acks_;  // by request id: DONE, FAILED or REFUSED
+  std::set<std::string> heard_;                   // request ids with any ack
+  std::map<std::string, avc::heartbeat_t> health_;
+  std::map<std::string, std::pair<products::Product, int64_t>> products_;  // by name; rx time
+  kinematics::JointVector last_joints_ = kinematics::JointVector::Zero();
+  int next_id_ = 1;
+};
+
+}  // namespace avc::bench

@@ -1,0 +1,128 @@
+#include "bench/devices/cell_processes.h"
+
+#include <arpa/inet.h>
+#include <fmt/format.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <deque>
+#include <fstream>
+#include <stdexcept>
+
+namespace avc::bench {
+namespace fs = std::filesystem;
+
+int FreeTcpPort() {
+  const int fd = socket(AF_INET, SOCK_STREAM, 0);
+  if (fd < 0) throw std::runtime_error("cannot create a socket to find a free port");
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  socklen_t length = sizeof(address);
+  const bool ok = bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof(address)) == 0 &&
+                  getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length) == 0;
+  close(fd);
+  if (!ok) throw std::runtime_error("cannot find a free TCP port on 127.0.0.1");
+  return ntohs(address.sin_port);
+}
+
+CellProcesses::CellProcesses(const CellProcessOptions& options) : work_dir_(options.work_dir) {
+  fs::create_directories(work_dir_);
+  const std::string avc = options.avc_binary.string();
+  const int rtde = FreeTcpPort(), primary = FreeTcpPort(), secondary = FreeTcpPort(),
+            dashboard = FreeTcpPort(), camera = FreeTcpPort();
+  const fs::path link_dir = work_dir_ / "sim";
+  std::vector<std::string> sim = {avc,
+                                  "sim",
+                                  "cell",
+                                  "--plant",
+                                  options.plant,
+                                  "--triangles",
+                                  std::to_string(options.triangles),
+                                  "--width",
+                                  std::to_string(options.width),
+                                  "--height",
+                                  std::to_string(options.height),
+                                  "--time-scale",
+                                  fmt::format("{}", options.time_scale),
+                                  "--rtde-port",
+                                  std::to_string(rtde),
+                                  "--primary-port",
+                                  std::to_string(primary),
+                                  "--secondary-port",
+                                  std::to_string(secondary),
+                                  "--dashboard-port",
+                                  std::to_string(dashboard),
+                                  "--camera-port",
+                                  std::to_string(camera),
+                                  "--capture-latency",
+                                  fmt::format("{}", options.capture_latency_s),
+                                  "--table-speed",
+                                  fmt::format("{}", options.table_speed_deg_s),
+                                  "--link-dir",
+                                  link_dir.string()};
+  if (options.png) sim.push_back("--png");
+  Start("avc-sim", sim, options);
+  Start(
+      "avc-robot",
+      {avc, "robot", "--host", "127.0.0.1", "--rtde-port", std::to_string(rtde), "--secondary-port",
+       std::to_string(secondary), "--dashboard-port", std::to_string(dashboard)},
+      options);
+  Start("avc-turntable",
+        {avc, "turntable", "--device", (link_dir / "lt360").string(), "--speed",
+         fmt::format("{}", options.table_speed_deg_s)},
+        options);
+  Start("avc-camera",
+        {avc, "camera", "--port", fmt::format("ptpip:127.0.0.1:{}", camera), "--no-usb-watch"},
+        options);
+}
+
+void CellProcesses::Start(const std::string& name, std::vector<std::string> argv,
+                          const CellProcessOptions& options) {
+  argv.insert(argv.end(), {"--lcm-url", options.lcm_url, "--bulk-url", options.bulk_url, "--cell",
+                           options.cell});
+  launch::SpawnSpec spec;
+  spec.argv = std::move(argv);
+  spec.log_file = (work_dir_ / (name + ".log")).string();
+  spec.env["HOME"] = work_dir_.string();  // libgphoto2 keeps its settings under $HOME
+  processes_.push_back({name, spec.log_file, launch::ChildProcess::Spawn(spec)});
+}
+
+CellProcesses::~CellProcesses() {
+  // Drivers first, so none of them sees its device vanish; the cell last.
+  for (auto it = processes_.rbegin(); it != processes_.rend(); ++it) {
+    it->child.Signal(SIGTERM);
+    if (!it->child.WaitFor(std::chrono::milliseconds(5000))) it->child.Signal(SIGKILL);
+  }
+}
+
+std::vector<std::string> CellProcesses::Exited() {
+  std::vector<std::string> exited;
+  for (Process& process : processes_) {
+    if (const auto status = process.child.TryWait()) {
+      exited.push_back(process.name + " " + launch::DescribeWaitStatus(*status));
+    }
+  }
+  return exited;
+}
+
+std::string CellProcesses::LogTails(int lines) const {
+  std::string out;
+  for (const Process& process : processes_) {
+    std::ifstream in(process.log);
+    std::deque<std::string> tail;
+    for (std::string line; std::getline(in, line);) {
+      tail.push_back(line);
+      if (static_cast<int>(tail.size()) > lines) tail.pop_front();
+    }
+    out += fmt::format("--- {} ({})\n", process.name, process.log.string());
+    for (const std::string& line : tail) out += line + "\n";
+  }
+  return out;
+}
+
+fs::path CellProcesses::truth_log() const { return work_dir_ / "sim" / "truth.jsonl"; }
+
+}  // namespace avc::bench

@@ -1,0 +1,63 @@
+#pragma once
+
+// The simulated cell as the separate processes a lab runs: `avc sim cell` (all emulators) plus
+// the three drivers (`avc robot`, `avc turntable`, `avc camera`) pointed at it over the real
+// protocols, talking LCM on the given URLs. Used by `avc bench devices` and the end-to-end test.
+// Ports are picked free at start; logs land in work_dir.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/launch/child_process.h"
+
+namespace avc::bench {
+
+struct CellProcessOptions {
+  std::filesystem::path avc_binary;  // the `avc` executable
+  std::filesystem::path work_dir;    // logs, pty link, truth.jsonl, HOME of the camera driver
+  std::string lcm_url;
+  std::string bulk_url;
+  std::string cell = "cell0";
+  double time_scale = 1;
+  std::string plant = "rosette";
+  int triangles = 20000;
+  int width = 1280, height = 960;
+  double table_speed_deg_s = 90;
+  double capture_latency_s = 0;
+  bool png = false;
+};
+
+class CellProcesses {
+ public:
+  // Starts the simulated cell and the drivers. Throws std::runtime_error when a process cannot
+  // be started.
+  explicit CellProcesses(const CellProcessOptions& options);
+  // SIGTERM to every process, then SIGKILL after 5 s for any that ignores it.
+  ~CellProcesses();
+  CellProcesses(const CellProcesses&) = delete;
+  CellProcesses& operator=(const CellProcesses&) = delete;
+
+  // Names of processes that exited (with how), empty while all run.
+  std::vector<std::string> Exited();
+  // The last lines of every log, for error messages.
+  std::string LogTails(int lines = 15) const;
+  std::filesystem::path truth_log() const;
+
+ private:
+  struct Process {
+    std::string name;
+    std::filesystem::path log;
+    launch::ChildProcess child;
+  };
+  void Start(const std::string& name, std::vector<std::string> argv,
+             const CellProcessOptions& options);
+
+  std::filesystem::path work_dir_;
+  std::vector<Process> processes_;
+};
+
+// A TCP port on 127.0.0.1 nobody listens on right now (bound, read back, closed).
+int FreeTcpPort();
+
+}  // namespace avc::bench
