@@ -187,6 +187,7 @@ int RunDevicesBenchmark(const std::vector<std::string>& arguments) {
       ->capture_default_str()
       ->check(CLI::Range(1, 200));
   app.add_option("--time-scales", args.time_scales, "simulated seconds per real second, each run")
+      ->delimiter(',')
       ->capture_default_str();
   app.add_option("--triangles", args.triangles, "plant triangles")->capture_default_str();
   app.add_option("--port", args.port, "multicast port of the control bus (bulk: +1)")
