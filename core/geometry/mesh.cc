@@ -19,6 +19,8 @@ std::string labels::Name(int32_t label) {
       return "stem";
     case kPetiole:
       return "petiole";
+    case kTarget:
+      return "target";
     default:
       break;
   }

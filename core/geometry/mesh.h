@@ -18,6 +18,7 @@ inline constexpr int32_t kPot = 1;
 inline constexpr int32_t kSoil = 2;
 inline constexpr int32_t kStem = 3;
 inline constexpr int32_t kPetiole = 4;
+inline constexpr int32_t kTarget = 5;  // a calibration board, not part of any plant
 inline constexpr int32_t kLeafBase = 100;
 inline bool IsLeaf(int32_t label) { return label >= kLeafBase; }
 // "pot", "stem", "leaf 3", ... for reports.

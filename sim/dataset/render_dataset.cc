@@ -62,6 +62,7 @@ void PrepareOutput(const fs::path& output) {
 }  // namespace
 
 Scene MakeScene(const RenderDatasetOptions& options) {
+  if (options.chessboard) return ChessboardScene(*options.chessboard);
   if (!options.mesh_file.empty()) {
     return SceneFromMesh(geometry::ReadMesh(options.mesh_file), options.placement);
   }

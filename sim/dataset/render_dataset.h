@@ -23,6 +23,7 @@
 
 #include "sim/cell/cell_truth.h"
 #include "sim/render/render_options.h"
+#include "sim/scene/chessboard_scene.h"
 #include "sim/scene/mesh_scene.h"
 #include "sim/scene/plant.h"
 
@@ -35,6 +36,8 @@ struct RenderDatasetOptions {
   PlantOptions plant;
   std::filesystem::path mesh_file;  // non-empty: render this instead of a preset
   MeshPlacement placement;
+  // Set: a calibration chessboard lying on the turntable instead of any plant.
+  std::optional<ChessboardSpec> chessboard;
 
   // The views: `views` spread over `rings` elevations (the paper's initial set is 3 x 10),
   // turntable angles evenly spaced per ring, the camera on the arm's side of the table.

@@ -1,5 +1,8 @@
 #include "tools/avc/sim_scene_flags.h"
 
+#include <sstream>
+#include <stdexcept>
+
 namespace avc::cli {
 
 void AddSimSceneFlags(CLI::App& command, SimSceneArgs& args) {
@@ -18,6 +21,11 @@ void AddSimSceneFlags(CLI::App& command, SimSceneArgs& args) {
   command.add_option("--mesh-height", o.placement.target_height, "height in metres to scale to")
       ->capture_default_str();
   command.add_flag("--y-up", o.placement.y_up, "the mesh's up axis is +y");
+  command.add_option("--chessboard", args.chessboard,
+                     "a calibration chessboard with COLSxROWS inner corners (e.g. 9x6) on the "
+                     "turntable instead of a plant");
+  command.add_option("--square", args.square_m, "chessboard square size, metres")
+      ->capture_default_str();
   command.add_option("--cell-seed", args.cell_seed, "seed of the perturbed cell")
       ->capture_default_str();
   command.add_flag("--nominal-cell", args.nominal_cell,
@@ -37,6 +45,19 @@ void AddSimSceneFlags(CLI::App& command, SimSceneArgs& args) {
 
 void ResolveSimScene(SimSceneArgs& args) {
   sim::RenderDatasetOptions& options = args.options;
+  if (!args.chessboard.empty()) {
+    sim::ChessboardSpec board;
+    char x = 0;
+    std::istringstream in(args.chessboard);
+    if (!(in >> board.inner_cols >> x >> board.inner_rows) || x != 'x' || !in.eof()) {
+      throw std::invalid_argument("--chessboard wants COLSxROWS inner corners, e.g. 9x6; got '" +
+                                  args.chessboard + "'");
+    }
+    board.square_m = args.square_m;
+    board.T_world_board =
+        sim::ChessboardSpec::DefaultBoardPose(board.inner_cols, board.inner_rows, board.square_m);
+    options.chessboard = board;
+  }
   options.preset = sim::ParsePreset(args.plant);
   if (args.nominal_cell) {
     options.cell_seed.reset();

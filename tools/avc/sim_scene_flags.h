@@ -15,6 +15,8 @@ struct SimSceneArgs {
   uint32_t cell_seed = 1;
   bool nominal_cell = false;
   std::string background = "cloth";
+  std::string chessboard;  // "COLSxROWS" inner corners; empty = a plant
+  double square_m = 0.025;
   sim::RenderDatasetOptions options;  // the scene, cell and render fields are filled in
 };
 
