@@ -10,12 +10,12 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 
-#include "bench/devices/cell_client.h"
 #include "bench/devices/cell_processes.h"
 #include "bench/registry.h"
 #include "bench/summary.h"
 #include "core/bus/bus.h"
 #include "core/launch/find_program.h"
+#include "drivers/client/cell_client.h"
 #include "sim/cell/cell_truth.h"
 #include "sim/cell/view_selection.h"
 
@@ -94,7 +94,7 @@ ModeResult RunMode(const DevicesBenchArgs& args, double time_scale,
   bus::Bus bus(bus_options);
   bus::EventLoop loop;
   bus.AttachTo(loop);
-  CellClient client(bus, loop);
+  client::CellClient client(bus, loop);
   try {
     client.WaitReady({"avc-sim", "avc-robot", "avc-turntable", "avc-camera"}, milliseconds(30000));
     client.Robot(avc::robot_command_t::KIND_POWER_ON, milliseconds(20000));
@@ -103,8 +103,8 @@ ModeResult RunMode(const DevicesBenchArgs& args, double time_scale,
       const int64_t start = MonotonicMicros();
       result.move_s.push_back(client.MoveJoints(plan[i].q, milliseconds(60000)));
       result.rotate_s.push_back(client.TurntableGoto(plan[i].table_rad, milliseconds(60000)));
-      const CapturedView view = client.Capture(fmt::format("view_{:04d}", i),
-                                               avc::image_t::ENCODING_JPEG, milliseconds(60000));
+      const client::CapturedView view = client.Capture(
+          fmt::format("view_{:04d}", i), avc::image_t::ENCODING_JPEG, milliseconds(60000));
       result.capture_s.push_back(view.request_to_sent_s);
       result.transfer_s.push_back(view.request_to_done_s - view.request_to_sent_s);
       result.view_s.push_back((MonotonicMicros() - start) * 1e-6);

@@ -15,12 +15,12 @@
 #include <numbers>
 #include <opencv2/imgcodecs.hpp>
 
-#include "bench/devices/cell_client.h"
 #include "bench/devices/cell_processes.h"
 #include "core/bus/bus.h"
 #include "core/bus/bus_options.h"
 #include "core/camera/camera_io.h"
 #include "core/launch/child_process.h"
+#include "drivers/client/cell_client.h"
 #include "sim/cell/cell_truth.h"
 #include "sim/cell/view_selection.h"
 #include "sim/dataset/render_dataset.h"
@@ -65,7 +65,7 @@ TEST(SimulatedCellMultiproc, PlannedViewIsCapturedFromTheTruePoseThroughEveryRea
   bus::Bus bus(bus_options);
   bus::EventLoop loop;
   bus.AttachTo(loop);
-  CellClient client(bus, loop);
+  client::CellClient client(bus, loop);
   try {
     client.WaitReady({"avc-sim", "avc-robot", "avc-turntable", "avc-camera"}, milliseconds(20000));
     client.Robot(avc::robot_command_t::KIND_POWER_ON, milliseconds(10000));
@@ -80,7 +80,7 @@ TEST(SimulatedCellMultiproc, PlannedViewIsCapturedFromTheTruePoseThroughEveryRea
     client.MoveJoints(*q, milliseconds(20000));
     const double table_angle = std::numbers::pi / 2;
     client.TurntableGoto(table_angle, milliseconds(20000));
-    const CapturedView view =
+    const client::CapturedView view =
         client.Capture("view_0000", avc::image_t::ENCODING_PNG, milliseconds(20000));
 
     ASSERT_EQ(view.image.width, 320);
@@ -132,11 +132,11 @@ TEST(SimulatedCellMultiproc, SimCellLaunchFileRunsTheCellUnderAvcUp) {
   bus::Bus bus(bus_options);
   bus::EventLoop loop;
   bus.AttachTo(loop);
-  CellClient client(bus, loop);
+  client::CellClient client(bus, loop);
   try {
     client.WaitReady({"avc-sim", "avc-robot", "avc-turntable", "avc-camera", "avc-record"},
                      milliseconds(30000));
-    const CapturedView view =
+    const client::CapturedView view =
         client.Capture("demo_0000", avc::image_t::ENCODING_JPEG, milliseconds(20000));
     EXPECT_EQ(view.image.width, 1280);
     EXPECT_EQ(view.image.height, 960);

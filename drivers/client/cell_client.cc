@@ -1,16 +1,17 @@
-#include "bench/devices/cell_client.h"
+#include "drivers/client/cell_client.h"
 
 #include <fmt/format.h>
 
 #include <avc/capture_request_t.hpp>
 #include <avc/robot_state_t.hpp>
+#include <avc/turntable_state_t.hpp>
 #include <stdexcept>
 
 #include "core/bus/channels.h"
 #include "core/bus/heartbeat.h"
 #include "core/util/clock.h"
 
-namespace avc::bench {
+namespace avc::client {
 namespace {
 
 int64_t WallMicros() { return SystemClock().NowMicros(); }
@@ -29,6 +30,16 @@ CellClient::CellClient(bus::Bus& bus, bus::EventLoop& loop) : bus_(bus), loop_(l
   subscriptions_.push_back(bus_.Subscribe<avc::robot_state_t>(
       channels::kRobotState, [this](const avc::robot_state_t& state, const bus::RxInfo&) {
         for (int i = 0; i < 6; ++i) last_joints_[i] = state.q[i];
+        for (int r = 0; r < 4; ++r) {
+          for (int c = 0; c < 4; ++c)
+            last_flange_pose_.matrix()(r, c) = state.T_base_flange[4 * r + c];
+        }
+        ++robot_states_;
+      }));
+  subscriptions_.push_back(bus_.Subscribe<avc::turntable_state_t>(
+      channels::kTurntableState, [this](const avc::turntable_state_t& state, const bus::RxInfo&) {
+        last_table_angle_ = state.angle;
+        ++table_states_;
       }));
   receiver_ = std::make_unique<products::ProductReceiver>(
       bus_, "avc-bench", "PRODUCT/IMAGE",
@@ -61,6 +72,16 @@ void CellClient::WaitReady(const std::vector<std::string>& services,
   }
   throw std::runtime_error("services not ready after " + std::to_string(timeout.count()) +
                            " ms:" + missing);
+}
+
+void CellClient::WaitFreshState(std::chrono::milliseconds timeout) {
+  const int64_t robot_before = robot_states_, table_before = table_states_;
+  if (!loop_.RunUntil(
+          [&] { return robot_states_ > robot_before + 1 && table_states_ > table_before + 1; },
+          timeout)) {
+    throw std::runtime_error("no fresh ROBOT_STATE and TURNTABLE_STATE within " +
+                             std::to_string(timeout.count()) + " ms");
+  }
 }
 
 std::string CellClient::NextId(const std::string& what) {
@@ -141,4 +162,4 @@ CapturedView CellClient::Capture(const std::string& image_id, int8_t encoding,
   return view;
 }
 
-}  // namespace avc::bench
+}  // namespace avc::client

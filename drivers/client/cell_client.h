@@ -1,9 +1,12 @@
 #pragma once
 
-// Drives a cell over the bus the way the orchestrator will: a command, then its ack; a capture
-// request, then the image product. Every call runs the event loop until the answer comes and
-// times it; a refusal, a failure or a timeout throws with the service's reason.
+// Drives a cell over the bus from one program (the calibrator, benchmarks, tests; the
+// orchestrator will do the same): a command, then its ack; a capture request, then the image
+// product. Every call runs the event loop until the answer comes and times it; a refusal, a
+// failure or a timeout throws with the service's reason. Lost datagrams are covered by
+// re-sending a request until it is acknowledged (a repeated request id never repeats work).
 
+#include <Eigen/Geometry>
 #include <avc/ack_t.hpp>
 #include <avc/heartbeat_t.hpp>
 #include <avc/image_t.hpp>
@@ -22,7 +25,7 @@
 #include "core/kinematics/dh_parameters.h"
 #include "core/products/product_receiver.h"
 
-namespace avc::bench {
+namespace avc::client {
 
 struct CapturedView {
   avc::image_t image;
@@ -49,8 +52,14 @@ class CellClient {
   CapturedView Capture(const std::string& image_id, int8_t encoding,
                        std::chrono::milliseconds timeout);
 
-  // Joints of the last ROBOT_STATE (zeros before one arrived).
+  // Joints and flange pose of the last ROBOT_STATE (zeros / identity before one arrived).
   kinematics::JointVector last_joints() const { return last_joints_; }
+  Eigen::Isometry3d last_flange_pose() const { return last_flange_pose_; }
+  // Angle of the last TURNTABLE_STATE, radians.
+  double last_table_angle() const { return last_table_angle_; }
+  // Runs the loop until a ROBOT_STATE and TURNTABLE_STATE newer than now have arrived (what was
+  // read after a motion ended, not before).
+  void WaitFreshState(std::chrono::milliseconds timeout);
 
  private:
   std::string NextId(const std::string& what);
@@ -69,7 +78,11 @@ class CellClient {
   std::map<std::string, avc::heartbeat_t> health_;
   std::map<std::string, std::pair<products::Product, int64_t>> products_;  // by name; rx time
   kinematics::JointVector last_joints_ = kinematics::JointVector::Zero();
+  Eigen::Isometry3d last_flange_pose_ = Eigen::Isometry3d::Identity();
+  double last_table_angle_ = 0;
+  int64_t robot_states_ = 0;
+  int64_t table_states_ = 0;
   int next_id_ = 1;
 };
 
-}  // namespace avc::bench
+}  // namespace avc::client

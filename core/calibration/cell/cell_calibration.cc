@@ -1,0 +1,73 @@
+#include "core/calibration/cell/cell_calibration.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "core/kinematics/forward_kinematics.h"
+
+namespace avc::calibration {
+namespace {
+
+bool IsRigid(const Eigen::Isometry3d& pose) {
+  const Eigen::Matrix3d r = pose.linear();
+  return pose.matrix().allFinite() &&
+         (r.transpose() * r - Eigen::Matrix3d::Identity()).norm() < 1e-6 &&
+         std::abs(r.determinant() - 1) < 1e-6;
+}
+
+}  // namespace
+
+std::string CellCalibration::Validate() const {
+  if (std::string problem = intrinsics.Validate(); !problem.empty())
+    return "intrinsics: " + problem;
+  if (!IsRigid(T_flange_cam)) return "T_flange_cam is not a rigid transform";
+  if (!IsRigid(T_base_table)) return "T_base_table is not a rigid transform";
+  if (std::string problem = dh.Validate(); !problem.empty()) return "kinematics: " + problem;
+  return "";
+}
+
+Eigen::Isometry3d TableFromWorld(double table_angle) {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() = Eigen::AngleAxisd(table_angle, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  return pose;
+}
+
+Eigen::Isometry3d TableFrame(const Eigen::Vector3d& axis_base, const Eigen::Vector3d& centre_base,
+                             const Eigen::Vector3d& board_x_base) {
+  const Eigen::Vector3d z = axis_base.normalized();
+  Eigen::Vector3d x = board_x_base - board_x_base.dot(z) * z;
+  if (!z.allFinite() || !centre_base.allFinite() || !(x.norm() > 1e-6)) {
+    throw std::invalid_argument(
+        "table frame: the board's x axis is parallel to the turntable axis");
+  }
+  x.normalize();
+  Eigen::Isometry3d T_base_table = Eigen::Isometry3d::Identity();
+  T_base_table.linear() << x, z.cross(x), z;
+  T_base_table.translation() = centre_base;
+  return T_base_table;
+}
+
+camera::Camera CellCalibration::CameraAt(const Eigen::Isometry3d& T_base_flange,
+                                         double table_angle) const {
+  if (!T_base_flange.matrix().allFinite() || !std::isfinite(table_angle)) {
+    throw std::invalid_argument(
+        fmt::format("camera pose query: non-finite flange pose or table angle {}", table_angle));
+  }
+  camera::Camera camera;
+  camera.intrinsics = intrinsics;
+  camera.T_cam_world =
+      T_flange_cam.inverse() * T_base_flange.inverse() * T_base_table * TableFromWorld(table_angle);
+  return camera;
+}
+
+camera::Camera CellCalibration::CameraAtJoints(const kinematics::JointVector& q,
+                                               double table_angle) const {
+  if (std::string problem = kinematics::ValidateJoints(q); !problem.empty()) {
+    throw std::invalid_argument("camera pose query: " + problem);
+  }
+  return CameraAt(kinematics::ForwardKinematics(dh, q), table_angle);
+}
+
+}  // namespace avc::calibration

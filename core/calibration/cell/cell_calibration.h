@@ -1,0 +1,68 @@
+#pragma once
+
+// What one calibration of the cell knows (paper §2.1): the camera's intrinsics, where the camera
+// sits on the flange (hand-eye), where the turntable's axis is relative to the robot base, and
+// the arm's kinematics. With it the camera pose follows for any arm pose and turntable angle,
+// with no target in view:
+//
+//   T_cam_world(q, theta) = T_cam_flange · T_flange_base(q) · T_base_table · T_table_world(theta)
+//
+// The table frame has z along the turntable axis (pointing up, so a positive angle turns the
+// plant counter-clockwise seen from above, as the LT360 driver counts), its origin on the axis
+// in the plane of the calibration board, and x along the board's x axis at angle 0.
+// T_table_world(theta) is the rotation by theta about z; the world (plant) frame equals the table
+// frame at angle 0.
+
+#include <Eigen/Geometry>
+#include <string>
+#include <vector>
+
+#include "core/camera/pinhole_camera.h"
+#include "core/kinematics/dh_parameters.h"
+
+namespace avc::calibration {
+
+// How well the calibration fits what it was computed from.
+struct CalibrationResiduals {
+  std::vector<std::string> view_names;
+  std::vector<double> view_rms_px;    // reprojection RMS per view used
+  std::vector<std::string> rejected;  // views left out, each "name: why"
+  double intrinsics_rms_px = 0;       // calibrateCamera's overall RMS
+  double hand_eye_rms_px = 0;         // board corners through the refined hand-eye chain
+  double hand_eye_rotation_deg = 0;   // AX=ZB residuals (median over poses)
+  double hand_eye_translation_mm = 0;
+  double turntable_centre_rms_mm = 0;  // board points about the fitted axis
+  int turntable_angles = 0;
+};
+
+struct CellCalibration {
+  static constexpr int kFormatVersion = 1;
+
+  camera::Intrinsics intrinsics;
+  Eigen::Isometry3d T_flange_cam = Eigen::Isometry3d::Identity();
+  Eigen::Isometry3d T_base_table = Eigen::Isometry3d::Identity();
+  // The arm's kinematics for joint-vector queries: the controller's own (KINEMATICS_INFO), not
+  // the nominal UR5 table, which can be centimetres off.
+  kinematics::DhParameters dh = kinematics::NominalUr5();
+  CalibrationResiduals residuals;
+  std::string note;  // free text: how, when, from what
+
+  // Empty when usable, else the first bad field.
+  std::string Validate() const;
+
+  // The camera for a flange pose reported by the controller (actual TCP with TCP = 0).
+  camera::Camera CameraAt(const Eigen::Isometry3d& T_base_flange, double table_angle) const;
+  // The camera for a joint vector (planning): forward kinematics with `dh`.
+  camera::Camera CameraAtJoints(const kinematics::JointVector& q, double table_angle) const;
+};
+
+// T_table_world(theta): rotation by theta about the table's z axis.
+Eigen::Isometry3d TableFromWorld(double table_angle);
+
+// The table frame from a fitted axis (unit direction, pointing up) through `centre` (both in the
+// base frame) and the board's x axis at angle 0 (projected onto the plane normal to the axis).
+// Throws std::invalid_argument when the x axis is (nearly) parallel to the axis.
+Eigen::Isometry3d TableFrame(const Eigen::Vector3d& axis_base, const Eigen::Vector3d& centre_base,
+                             const Eigen::Vector3d& board_x_base);
+
+}  // namespace avc::calibration
