@@ -1,0 +1,57 @@
+#pragma once
+
+// Camera intrinsics (fx fy cx cy, k1 k2 p1 p2 k3) from chessboard views with cv::calibrateCamera,
+// rejecting views that do not fit and refusing sets that cannot constrain the model.
+//
+// View rejection rule: calibrate, take the per-view reprojection RMS; while the worst view's RMS
+// exceeds both `outlier_factor` x the median view RMS and `outlier_floor_px`, drop that one view
+// and recalibrate (one at a time, since a single bad view inflates every other view's RMS).
+
+#include <Eigen/Geometry>
+#include <string>
+#include <vector>
+
+#include "core/calibration/board/chessboard.h"
+#include "core/calibration/board/chessboard_detection.h"
+#include "core/camera/pinhole_camera.h"
+
+namespace avc::calibration {
+
+struct IntrinsicsOptions {
+  int min_views = 5;              // refuse with fewer usable views
+  double outlier_factor = 3.0;    // reject a view above this multiple of the median view RMS ...
+  double outlier_floor_px = 0.3;  // ... and above this absolute RMS (noise-free sets stay whole)
+  int coverage_grid_cols = 8;
+  int coverage_grid_rows = 6;
+  double min_coverage = 0.4;       // refuse below this fraction of grid cells with corners
+  double advised_coverage = 0.75;  // warn below this fraction
+};
+
+struct ViewReport {
+  std::string name;
+  double rms_px = 0;  // reprojection RMS at the final (or rejecting) calibration
+  bool rejected = false;
+  Eigen::Isometry3d T_cam_board = Eigen::Isometry3d::Identity();  // valid for kept views
+};
+
+struct IntrinsicsReport {
+  double rms_px = 0;              // overall RMS over the kept views
+  double coverage = 0;            // fraction of the coverage grid with corners (kept views)
+  std::vector<ViewReport> views;  // in input order
+  std::vector<std::string> warnings;
+};
+
+struct IntrinsicsCalibration {
+  camera::Intrinsics intrinsics;
+  IntrinsicsReport report;
+};
+
+// Throws std::invalid_argument for a bad board, views of different image sizes or with a wrong
+// corner count / non-finite corners (naming the view), and std::runtime_error when fewer than
+// min_views remain (naming the rejected views and their RMS), when coverage is below
+// min_coverage, or when OpenCV fails or returns non-finite values.
+IntrinsicsCalibration CalibrateIntrinsics(const std::vector<BoardDetection>& views,
+                                          const Chessboard& board,
+                                          const IntrinsicsOptions& options = {});
+
+}  // namespace avc::calibration
