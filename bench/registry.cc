@@ -1,6 +1,7 @@
 #include "bench/registry.h"
 
 #include "bench/bus/bus_bench.h"
+#include "bench/calibration/calibration_bench.h"
 #include "bench/devices/devices_bench.h"
 #include "bench/render/render_bench.h"
 
@@ -21,6 +22,10 @@ const std::vector<Benchmark>& AllBenchmarks() {
        "time per captured view in the simulated cell (move, rotate, capture, transfer) with "
        "every driver a separate process on the real protocols, at real time and a faster clock",
        RunDevicesBenchmark},
+      {"calibration",
+       "hand-eye (closed form, Ceres, OpenCV SHAH) and turntable axis (paper, closed form, Ceres) "
+       "Monte-Carlo, and the calibration end to end in the simulated cell",
+       RunCalibrationBenchmark},
   };
   return benchmarks;
 }

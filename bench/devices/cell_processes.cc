@@ -11,6 +11,8 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "core/launch/find_program.h"
+
 namespace avc::bench {
 namespace fs = std::filesystem;
 
@@ -26,6 +28,27 @@ int FreeTcpPort() {
   close(fd);
   if (!ok) throw std::runtime_error("cannot find a free TCP port on 127.0.0.1");
   return ntohs(address.sin_port);
+}
+
+CellProcessOptions LocalCellOptions(int port, const std::string& cell, double time_scale,
+                                    const fs::path& work_dir) {
+  CellProcessOptions options;
+  options.avc_binary = launch::SelfExecutableDir() / "avc";
+  options.work_dir = work_dir;
+  options.lcm_url = fmt::format("udpm://239.255.76.67:{}?ttl=0", port);
+  options.bulk_url = fmt::format("udpm://239.255.76.67:{}?ttl=0&recv_buf_size=4194304", port + 1);
+  options.cell = cell;
+  options.time_scale = time_scale;
+  return options;
+}
+
+bus::BusOptions ClientBusOptions(const CellProcessOptions& options, const std::string& source) {
+  bus::BusOptions bus_options;
+  bus_options.control_url = options.lcm_url;
+  bus_options.bulk_url = options.bulk_url;
+  bus_options.cell = options.cell;
+  bus_options.source = source;
+  return bus_options;
 }
 
 CellProcesses::CellProcesses(const CellProcessOptions& options) : work_dir_(options.work_dir) {
@@ -64,6 +87,7 @@ CellProcesses::CellProcesses(const CellProcessOptions& options) : work_dir_(opti
                                   "--link-dir",
                                   link_dir.string()};
   if (options.png) sim.push_back("--png");
+  sim.insert(sim.end(), options.extra_sim_args.begin(), options.extra_sim_args.end());
   Start("avc-sim", sim, options);
   Start(
       "avc-robot",

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/bus/bus_options.h"
 #include "core/launch/child_process.h"
 
 namespace avc::bench {
@@ -26,6 +27,8 @@ struct CellProcessOptions {
   double table_speed_deg_s = 90;
   double capture_latency_s = 0;
   bool png = false;
+  // More `avc sim cell` flags, e.g. {"--chessboard", "9x6", "--samples", "4"}.
+  std::vector<std::string> extra_sim_args;
 };
 
 class CellProcesses {
@@ -56,6 +59,14 @@ class CellProcesses {
   std::filesystem::path work_dir_;
   std::vector<Process> processes_;
 };
+
+// A bench cell with the `avc` next to this executable, on udpm multicast ports `port` (control)
+// and `port + 1` (bulk, with a 4 MB receive buffer), staying on this machine (ttl 0).
+CellProcessOptions LocalCellOptions(int port, const std::string& cell, double time_scale,
+                                    const std::filesystem::path& work_dir);
+
+// The bus options of a program that talks to that cell.
+bus::BusOptions ClientBusOptions(const CellProcessOptions& options, const std::string& source);
 
 // A TCP port on 127.0.0.1 nobody listens on right now (bound, read back, closed).
 int FreeTcpPort();

@@ -14,7 +14,6 @@
 #include "bench/registry.h"
 #include "bench/summary.h"
 #include "core/bus/bus.h"
-#include "core/launch/find_program.h"
 #include "drivers/client/cell_client.h"
 #include "sim/cell/cell_truth.h"
 #include "sim/cell/view_selection.h"
@@ -52,15 +51,10 @@ std::vector<PlannedView> PlanViews(int count) {
   for (int i = 0; i < count; ++i) {
     const double elevation = (i % 2 == 0 ? 15.0 : 35.0) * std::numbers::pi / 180;
     const double azimuth = robot_azimuth + ((i / 2) % 3 - 1) * 25.0 * std::numbers::pi / 180;
-    std::optional<kinematics::JointVector> q;
-    for (const double distance : {0.6, 0.7, 0.5}) {  // the nearest the arm reaches
-      q = sim::JointsLookingAt(
-          nominal, sim::ViewpointOnSphere(target, distance, elevation, azimuth), target, current);
-      if (q) break;
-    }
-    if (!q) throw std::runtime_error(fmt::format("bench view {} is out of the arm's reach", i));
-    views.push_back({*q, 2 * std::numbers::pi * i / count});
-    current = *q;
+    const auto view = sim::FirstReachableView(nominal, target, 0.6, elevation, azimuth, current);
+    if (!view) throw std::runtime_error(fmt::format("bench view {} is out of the arm's reach", i));
+    views.push_back({view->q, 2 * std::numbers::pi * i / count});
+    current = view->q;
   }
   return views;
 }
@@ -75,23 +69,11 @@ ModeResult RunMode(const DevicesBenchArgs& args, double time_scale,
                    const std::vector<PlannedView>& plan, const fs::path& work) {
   ModeResult result;
   result.time_scale = time_scale;
-  CellProcessOptions options;
-  options.avc_binary = launch::SelfExecutableDir() / "avc";
-  options.work_dir = work;
-  options.lcm_url = fmt::format("udpm://239.255.76.67:{}?ttl=0", args.port);
-  options.bulk_url =
-      fmt::format("udpm://239.255.76.67:{}?ttl=0&recv_buf_size=4194304", args.port + 1);
-  options.cell = "bench";
-  options.time_scale = time_scale;
+  CellProcessOptions options = LocalCellOptions(args.port, "bench", time_scale, work);
   options.triangles = args.triangles;
   CellProcesses cell(options);
 
-  bus::BusOptions bus_options;
-  bus_options.control_url = options.lcm_url;
-  bus_options.bulk_url = options.bulk_url;
-  bus_options.cell = options.cell;
-  bus_options.source = "avc-bench";
-  bus::Bus bus(bus_options);
+  bus::Bus bus(ClientBusOptions(options, "avc-bench"));
   bus::EventLoop loop;
   bus.AttachTo(loop);
   client::CellClient client(bus, loop);

@@ -57,6 +57,40 @@ nlohmann::ordered_json CameraToJson(const NamedCamera& named) {
       {"T_cam_world", pose}};
 }
 
+NamedCamera CameraFromJson(const nlohmann::json& entry, const std::string& default_name) {
+  try {
+    NamedCamera named;
+    named.name = entry.value("name", default_name);
+    Intrinsics& k = named.camera.intrinsics;
+    k.width = entry.at("width").get<int>();
+    k.height = entry.at("height").get<int>();
+    k.fx = entry.at("fx").get<double>();
+    k.fy = entry.at("fy").get<double>();
+    k.cx = entry.at("cx").get<double>();
+    k.cy = entry.at("cy").get<double>();
+    if (entry.contains("distortion")) {
+      const std::vector<double> d = entry.at("distortion").get<std::vector<double>>();
+      if (d.size() > 5) throw std::runtime_error("distortion has more than 5 coefficients");
+      std::copy(d.begin(), d.end(), k.distortion.begin());
+    }
+    const std::vector<double> pose = entry.at("T_cam_world").get<std::vector<double>>();
+    if (pose.size() != 16) {
+      throw std::runtime_error("T_cam_world must have 16 numbers (row-major 4x4)");
+    }
+    for (int r = 0; r < 4; ++r) {
+      for (int c = 0; c < 4; ++c) {
+        named.camera.T_cam_world.matrix()(r, c) = pose[static_cast<size_t>(4 * r + c)];
+      }
+    }
+    if (const std::string problem = CheckCamera(named); !problem.empty()) {
+      throw std::runtime_error(problem);
+    }
+    return named;
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(e.what());
+  }
+}
+
 void WriteCamerasJson(const fs::path& path, const std::vector<NamedCamera>& cameras) {
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
   for (const NamedCamera& named : cameras) list.push_back(CameraToJson(named));
@@ -78,36 +112,10 @@ std::vector<NamedCamera> ReadCamerasJson(const fs::path& path) {
   if (!list->is_array()) Fail(path, "", "\"cameras\" is not a list");
   std::vector<NamedCamera> cameras;
   for (size_t i = 0; i < list->size(); ++i) {
-    const nlohmann::json& entry = (*list)[i];
-    const std::string where = fmt::format(": camera {}", i);
     try {
-      NamedCamera named;
-      named.name = entry.value("name", fmt::format("view_{:04d}", i));
-      Intrinsics& k = named.camera.intrinsics;
-      k.width = entry.at("width").get<int>();
-      k.height = entry.at("height").get<int>();
-      k.fx = entry.at("fx").get<double>();
-      k.fy = entry.at("fy").get<double>();
-      k.cx = entry.at("cx").get<double>();
-      k.cy = entry.at("cy").get<double>();
-      if (entry.contains("distortion")) {
-        const std::vector<double> d = entry.at("distortion").get<std::vector<double>>();
-        if (d.size() > 5) Fail(path, where, "distortion has more than 5 coefficients");
-        std::copy(d.begin(), d.end(), k.distortion.begin());
-      }
-      const std::vector<double> pose = entry.at("T_cam_world").get<std::vector<double>>();
-      if (pose.size() != 16) Fail(path, where, "T_cam_world must have 16 numbers (row-major 4x4)");
-      Eigen::Matrix4d m;
-      for (int r = 0; r < 4; ++r) {
-        for (int c = 0; c < 4; ++c) m(r, c) = pose[static_cast<size_t>(4 * r + c)];
-      }
-      named.camera.T_cam_world.matrix() = m;
-      if (const std::string problem = CheckCamera(named); !problem.empty()) {
-        Fail(path, where, problem);
-      }
-      cameras.push_back(std::move(named));
-    } catch (const nlohmann::json::exception& e) {
-      Fail(path, where, e.what());
+      cameras.push_back(CameraFromJson((*list)[i], fmt::format("view_{:04d}", i)));
+    } catch (const std::runtime_error& e) {
+      Fail(path, fmt::format(": camera {}", i), e.what());
     }
   }
   return cameras;

@@ -25,6 +25,10 @@ struct NamedCamera {
 // One cameras.json entry. Throws std::invalid_argument for an unusable camera.
 nlohmann::ordered_json CameraToJson(const NamedCamera& camera);
 
+// One cameras.json entry back (name defaults to default_name). Throws std::runtime_error saying
+// what is wrong with it.
+NamedCamera CameraFromJson(const nlohmann::json& entry, const std::string& default_name);
+
 void WriteCamerasJson(const std::filesystem::path& path, const std::vector<NamedCamera>& cameras);
 std::vector<NamedCamera> ReadCamerasJson(const std::filesystem::path& path);
 

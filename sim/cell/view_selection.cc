@@ -1,6 +1,7 @@
 #include "sim/cell/view_selection.h"
 
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -46,15 +47,22 @@ std::optional<kinematics::JointVector> JointsLookingAt(const CellTruth& cell,
                                                        const Eigen::Vector3d& camera_centre_table,
                                                        const Eigen::Vector3d& target_table,
                                                        const kinematics::JointVector& current) {
+  return JointsForCameraPose(
+      cell,
+      LookAtPose(camera_centre_table, target_table, cell.T_base_table.inverse().translation()),
+      current);
+}
+
+std::optional<kinematics::JointVector> JointsForCameraPose(const CellTruth& cell,
+                                                           const Eigen::Isometry3d& T_table_cam,
+                                                           const kinematics::JointVector& current) {
   if (std::string error = cell.Validate(); !error.empty()) {
-    throw std::invalid_argument("JointsLookingAt: invalid cell: " + error);
+    throw std::invalid_argument("camera pose to joints: invalid cell: " + error);
   }
-  if (!current.allFinite()) {
-    throw std::invalid_argument("JointsLookingAt: the current joints are not finite");
+  if (!current.allFinite() || !T_table_cam.matrix().allFinite()) {
+    throw std::invalid_argument(
+        "camera pose to joints: the current joints or the pose are not finite");
   }
-  const Eigen::Isometry3d T_table_base = cell.T_base_table.inverse();
-  const Eigen::Isometry3d T_table_cam =
-      LookAtPose(camera_centre_table, target_table, T_table_base.translation());
   const Eigen::Isometry3d T_base_flange =
       cell.T_base_table * T_table_cam * cell.T_flange_cam.inverse();
   // At a wrist singularity joint 6 is free: keep it where it is.
@@ -68,6 +76,23 @@ Eigen::Vector3d ViewpointOnSphere(const Eigen::Vector3d& target, double distance
   return target + distance * Eigen::Vector3d(std::cos(elevation) * std::cos(azimuth),
                                              std::cos(elevation) * std::sin(azimuth),
                                              std::sin(elevation));
+}
+
+std::optional<ReachableView> FirstReachableView(const CellTruth& cell,
+                                                const Eigen::Vector3d& target, double distance,
+                                                double elevation, double azimuth,
+                                                const kinematics::JointVector& current) {
+  constexpr double kDeg = std::numbers::pi / 180;
+  for (const double scale : {1.0, 0.9, 1.1, 0.8, 1.2}) {
+    for (const double swing : {0.0, 30.0, -30.0, 60.0, -60.0, 90.0, -90.0}) {
+      const Eigen::Vector3d centre =
+          ViewpointOnSphere(target, scale * distance, elevation, azimuth + swing * kDeg);
+      if (const auto q = JointsLookingAt(cell, centre, target, current)) {
+        return ReachableView{*q, centre};
+      }
+    }
+  }
+  return std::nullopt;
 }
 
 double RobotAzimuth(const CellTruth& cell) {

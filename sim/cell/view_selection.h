@@ -31,10 +31,29 @@ std::optional<kinematics::JointVector> JointsLookingAt(const CellTruth& cell,
                                                        const Eigen::Vector3d& target_table,
                                                        const kinematics::JointVector& current);
 
+// Joints that put the camera of `cell` at T_table_cam, on the inverse-kinematics branch nearest to
+// `current`; nullopt when the arm cannot reach it. Throws std::invalid_argument like
+// JointsLookingAt.
+std::optional<kinematics::JointVector> JointsForCameraPose(const CellTruth& cell,
+                                                           const Eigen::Isometry3d& T_table_cam,
+                                                           const kinematics::JointVector& current);
+
 // The point at `distance` from `target` at `elevation` above the table plane and `azimuth`
 // (counter-clockwise from the table x axis), all in the table frame, radians and metres.
 Eigen::Vector3d ViewpointOnSphere(const Eigen::Vector3d& target, double distance, double elevation,
                                   double azimuth);
+
+// A view of `target` at `elevation` that the arm reaches: tries distances near `distance` and
+// azimuths swinging away from `azimuth` (0, +-30, +-60, +-90 degrees), nearest first, and
+// returns the first reachable joints (nearest branch to `current`), or nullopt.
+struct ReachableView {
+  kinematics::JointVector q;
+  Eigen::Vector3d centre_table;
+};
+std::optional<ReachableView> FirstReachableView(const CellTruth& cell,
+                                                const Eigen::Vector3d& target, double distance,
+                                                double elevation, double azimuth,
+                                                const kinematics::JointVector& current);
 
 // Azimuth of the robot base's origin seen from the turntable centre in the table frame: views
 // within about +-60 degrees of it are the comfortable ones for the arm.

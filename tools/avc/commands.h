@@ -21,5 +21,6 @@ void RegisterEval(CLI::App& root, int* exit_code);
 void RegisterTurntable(CLI::App& root, int* exit_code);
 void RegisterCamera(CLI::App& root, int* exit_code);
 void RegisterRobot(CLI::App& root, int* exit_code);
+void RegisterCalibrate(CLI::App& root, int* exit_code);
 
 }  // namespace avc::cli

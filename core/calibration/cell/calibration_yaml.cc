@@ -110,6 +110,7 @@ std::string CalibrationToYaml(const CellCalibration& calibration) {
   out << YAML::EndMap;
   EmitMatrix(out, "T_flange_cam", calibration.T_flange_cam);
   EmitMatrix(out, "T_base_table", calibration.T_base_table);
+  EmitMatrix(out, "T_table_board", calibration.T_table_board);
   out << YAML::Key << "kinematics" << YAML::Value << YAML::BeginMap;
   EmitVector(out, "a", calibration.dh.a);
   EmitVector(out, "d", calibration.dh.d);
@@ -170,6 +171,7 @@ CellCalibration CalibrationFromYaml(const std::string& text, const std::string& 
   std::copy(distortion.begin(), distortion.end(), k.distortion.begin());
   calibration.T_flange_cam = read.Pose(doc, "T_flange_cam");
   calibration.T_base_table = read.Pose(doc, "T_base_table");
+  calibration.T_table_board = read.Pose(doc, "T_table_board");
   const YAML::Node kinematics = read.Child(doc, "kinematics");
   calibration.dh.a = read.Joints(kinematics, "a");
   calibration.dh.d = read.Joints(kinematics, "d");

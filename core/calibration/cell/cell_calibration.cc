@@ -24,6 +24,7 @@ std::string CellCalibration::Validate() const {
     return "intrinsics: " + problem;
   if (!IsRigid(T_flange_cam)) return "T_flange_cam is not a rigid transform";
   if (!IsRigid(T_base_table)) return "T_base_table is not a rigid transform";
+  if (!IsRigid(T_table_board)) return "T_table_board is not a rigid transform";
   if (std::string problem = dh.Validate(); !problem.empty()) return "kinematics: " + problem;
   return "";
 }
@@ -32,21 +33,6 @@ Eigen::Isometry3d TableFromWorld(double table_angle) {
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
   pose.linear() = Eigen::AngleAxisd(table_angle, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   return pose;
-}
-
-Eigen::Isometry3d TableFrame(const Eigen::Vector3d& axis_base, const Eigen::Vector3d& centre_base,
-                             const Eigen::Vector3d& board_x_base) {
-  const Eigen::Vector3d z = axis_base.normalized();
-  Eigen::Vector3d x = board_x_base - board_x_base.dot(z) * z;
-  if (!z.allFinite() || !centre_base.allFinite() || !(x.norm() > 1e-6)) {
-    throw std::invalid_argument(
-        "table frame: the board's x axis is parallel to the turntable axis");
-  }
-  x.normalize();
-  Eigen::Isometry3d T_base_table = Eigen::Isometry3d::Identity();
-  T_base_table.linear() << x, z.cross(x), z;
-  T_base_table.translation() = centre_base;
-  return T_base_table;
 }
 
 camera::Camera CellCalibration::CameraAt(const Eigen::Isometry3d& T_base_flange,

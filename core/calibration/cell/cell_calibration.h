@@ -7,9 +7,10 @@
 //
 //   T_cam_world(q, theta) = T_cam_flange · T_flange_base(q) · T_base_table · T_table_world(theta)
 //
-// The table frame has z along the turntable axis (pointing up, so a positive angle turns the
-// plant counter-clockwise seen from above, as the LT360 driver counts), its origin on the axis
-// in the plane of the calibration board, and x along the board's x axis at angle 0.
+// The table frame (calibration/turntable TableFrame) has z along the turntable axis, pointing so
+// that a positive angle turns right-handed about it (counter-clockwise seen from above, as the
+// LT360 driver counts), its origin on the axis level with the calibration board, and x towards
+// the board's origin at angle 0.
 // T_table_world(theta) is the rotation by theta about z; the world (plant) frame equals the table
 // frame at angle 0.
 
@@ -41,6 +42,9 @@ struct CellCalibration {
   camera::Intrinsics intrinsics;
   Eigen::Isometry3d T_flange_cam = Eigen::Isometry3d::Identity();
   Eigen::Isometry3d T_base_table = Eigen::Isometry3d::Identity();
+  // Where the calibration board lay at angle 0, in the table (= world) frame: relates this
+  // calibration's world frame to the board, e.g. to compare with a simulator's truth.
+  Eigen::Isometry3d T_table_board = Eigen::Isometry3d::Identity();
   // The arm's kinematics for joint-vector queries: the controller's own (KINEMATICS_INFO), not
   // the nominal UR5 table, which can be centimetres off.
   kinematics::DhParameters dh = kinematics::NominalUr5();
@@ -58,11 +62,5 @@ struct CellCalibration {
 
 // T_table_world(theta): rotation by theta about the table's z axis.
 Eigen::Isometry3d TableFromWorld(double table_angle);
-
-// The table frame from a fitted axis (unit direction, pointing up) through `centre` (both in the
-// base frame) and the board's x axis at angle 0 (projected onto the plane normal to the axis).
-// Throws std::invalid_argument when the x axis is (nearly) parallel to the axis.
-Eigen::Isometry3d TableFrame(const Eigen::Vector3d& axis_base, const Eigen::Vector3d& centre_base,
-                             const Eigen::Vector3d& board_x_base);
 
 }  // namespace avc::calibration

@@ -117,4 +117,24 @@ EmulatedFrame SimulatedCell::RenderFrame() {
   return frame;
 }
 
+std::vector<camera::NamedCamera> ReadTruthLog(const fs::path& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path.string());
+  std::vector<camera::NamedCamera> frames;
+  int line_number = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++line_number;
+    const nlohmann::json entry = nlohmann::json::parse(line, nullptr, /*allow_exceptions=*/false);
+    try {
+      if (entry.is_discarded() || !entry.contains("camera")) {
+        throw std::runtime_error("not a frame record");
+      }
+      frames.push_back(camera::CameraFromJson(entry["camera"], entry.value("file_name", "")));
+    } catch (const std::runtime_error& error) {
+      throw std::runtime_error(fmt::format("{}:{}: {}", path.string(), line_number, error.what()));
+    }
+  }
+  return frames;
+}
+
 }  // namespace avc::sim

@@ -12,7 +12,9 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <vector>
 
+#include "core/camera/camera_io.h"
 #include "sim/cell/cell_truth.h"
 #include "sim/cell/noise.h"
 #include "sim/emulators/clock/emulator_clock.h"
@@ -86,5 +88,9 @@ class SimulatedCell {
 
   std::unique_ptr<PtpIpCamera> camera_;  // last: its thread calls RenderFrame
 };
+
+// The frames a simulated cell logged to truth.jsonl, in capture order, each named by the camera's
+// file name. Throws std::runtime_error naming the file and line of a bad entry.
+std::vector<camera::NamedCamera> ReadTruthLog(const std::filesystem::path& path);
 
 }  // namespace avc::sim

@@ -24,6 +24,7 @@
 #include "sim/cell/cell_truth.h"
 #include "sim/cell/view_selection.h"
 #include "sim/dataset/render_dataset.h"
+#include "sim/emulators/cell/simulated_cell.h"
 #include "sim/render/renderer.h"
 #include "tests/support/test_support.h"
 
@@ -34,17 +35,6 @@ namespace fs = std::filesystem;
 using std::chrono::milliseconds;
 
 constexpr int kTriangles = 6000;
-
-// The camera the simulated cell logged for its last frame.
-camera::Camera LastTrueCamera(const fs::path& truth_log) {
-  std::ifstream in(truth_log);
-  std::string line, last;
-  while (std::getline(in, line)) last = line;
-  EXPECT_FALSE(last.empty()) << "no frame in " << truth_log;
-  const fs::path one = truth_log.parent_path() / "last_camera.json";
-  std::ofstream(one) << nlohmann::json{{"cameras", {nlohmann::json::parse(last)["camera"]}}};
-  return camera::ReadCamerasJson(one).at(0).camera;
-}
 
 TEST(SimulatedCellMultiproc, PlannedViewIsCapturedFromTheTruePoseThroughEveryRealDriver) {
   testing::TempDir dir("avc-cell-mp");
@@ -90,7 +80,7 @@ TEST(SimulatedCellMultiproc, PlannedViewIsCapturedFromTheTruePoseThroughEveryRea
     ASSERT_FALSE(delivered.empty());
 
     // The frame is the plant rendered from the true camera the cell logged for it...
-    const camera::Camera truth = LastTrueCamera(cell.truth_log());
+    const camera::Camera truth = sim::ReadTruthLog(cell.truth_log()).back().camera;
     sim::RenderDatasetOptions scene_options;
     scene_options.plant.target_triangles = kTriangles;
     scene_options.render.background.kind = sim::Background::Kind::kCloth;

@@ -1,0 +1,126 @@
+#include "core/calibration/pipeline/calibration_dataset.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+namespace avc::calibration {
+namespace {
+
+constexpr const char* kFormat = "avc-calibration-dataset";
+constexpr int kVersion = 1;
+
+const char* PurposeName(ShotPurpose purpose) {
+  return purpose == ShotPurpose::kHandEye ? "hand_eye" : "turntable";
+}
+
+bool IsRigid(const Eigen::Isometry3d& pose) {
+  const Eigen::Matrix3d r = pose.linear();
+  return pose.matrix().allFinite() &&
+         (r.transpose() * r - Eigen::Matrix3d::Identity()).norm() < 1e-6 &&
+         std::abs(r.determinant() - 1) < 1e-6 &&
+         pose.matrix().row(3).isApprox(Eigen::RowVector4d(0, 0, 0, 1));
+}
+
+}  // namespace
+
+CalibrationDataset LoadCalibrationDataset(const std::filesystem::path& folder) {
+  const std::filesystem::path path = folder / "dataset.json";
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path.string());
+  const nlohmann::json doc = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  const auto fail = [&](const std::string& what) {
+    throw std::runtime_error(fmt::format("{}: {}", path.string(), what));
+  };
+  if (doc.is_discarded() || !doc.is_object()) fail("not valid JSON");
+  if (doc.value("format", "") != kFormat) fail(fmt::format("\"format\" is not \"{}\"", kFormat));
+  if (doc.value("version", 0) != kVersion) {
+    fail(fmt::format("version {} is not supported (this AVC reads {})", doc.value("version", 0),
+                     kVersion));
+  }
+  CalibrationDataset dataset;
+  dataset.folder = folder;
+  try {
+    const nlohmann::json& board = doc.at("board");
+    dataset.board.cols = board.at("cols").get<int>();
+    dataset.board.rows = board.at("rows").get<int>();
+    dataset.board.square_size = board.at("square").get<double>();
+  } catch (const nlohmann::json::exception& error) {
+    fail(std::string("board: ") + error.what());
+  }
+  if (const std::string problem = dataset.board.Validate(); !problem.empty()) {
+    fail("board: " + problem);
+  }
+  if (!doc.contains("shots") || !doc["shots"].is_array()) fail("no \"shots\" list");
+  for (size_t i = 0; i < doc["shots"].size(); ++i) {
+    const nlohmann::json& entry = doc["shots"][i];
+    CalibrationShot shot;
+    try {
+      shot.image = entry.at("image").get<std::string>();
+      const std::string purpose = entry.at("purpose").get<std::string>();
+      if (purpose != "hand_eye" && purpose != "turntable") {
+        fail(fmt::format("shot {}: unknown purpose '{}' (hand_eye or turntable)", i, purpose));
+      }
+      shot.purpose = purpose == "hand_eye" ? ShotPurpose::kHandEye : ShotPurpose::kTurntable;
+      shot.table_angle = entry.at("table_angle").get<double>();
+      // JSON has no NaN: a non-finite pose was written as null.
+      const nlohmann::json& pose = entry.at("T_base_flange");
+      const bool numbers =
+          pose.is_array() && pose.size() == 16 &&
+          std::all_of(pose.begin(), pose.end(), [](const auto& v) { return v.is_number(); });
+      if (!numbers) {
+        fail(fmt::format("shot {} ({}): T_base_flange must be 16 finite numbers", i, shot.image));
+      }
+      for (int r = 0; r < 4; ++r) {
+        for (int c = 0; c < 4; ++c) {
+          shot.T_base_flange.matrix()(r, c) = pose[static_cast<size_t>(4 * r + c)].get<double>();
+        }
+      }
+    } catch (const nlohmann::json::exception& error) {
+      fail(fmt::format("shot {}: {}", i, error.what()));
+    }
+    if (!std::isfinite(shot.table_angle)) {
+      fail(fmt::format("shot {} ({}): table angle is not finite", i, shot.image));
+    }
+    if (!IsRigid(shot.T_base_flange)) {
+      fail(fmt::format("shot {} ({}): T_base_flange is not a finite rigid transform", i,
+                       shot.image));
+    }
+    if (!std::filesystem::exists(folder / shot.image)) {
+      fail(fmt::format("shot {}: image {} does not exist", i, (folder / shot.image).string()));
+    }
+    dataset.shots.push_back(std::move(shot));
+  }
+  return dataset;
+}
+
+void SaveCalibrationDataset(const CalibrationDataset& dataset) {
+  nlohmann::ordered_json doc;
+  doc["format"] = kFormat;
+  doc["version"] = kVersion;
+  doc["board"] = {{"cols", dataset.board.cols},
+                  {"rows", dataset.board.rows},
+                  {"square", dataset.board.square_size}};
+  doc["shots"] = nlohmann::ordered_json::array();
+  for (const CalibrationShot& shot : dataset.shots) {
+    std::vector<double> m;
+    for (int r = 0; r < 4; ++r) {
+      for (int c = 0; c < 4; ++c) m.push_back(shot.T_base_flange.matrix()(r, c));
+    }
+    doc["shots"].push_back({{"image", shot.image},
+                            {"purpose", PurposeName(shot.purpose)},
+                            {"table_angle", shot.table_angle},
+                            {"T_base_flange", m}});
+  }
+  const std::filesystem::path path = dataset.folder / "dataset.json";
+  std::ofstream out(path, std::ios::trunc);
+  out << doc.dump(1) << "\n";
+  out.close();
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+}
+
+}  // namespace avc::calibration

@@ -1,0 +1,33 @@
+#pragma once
+
+// Where the arm goes during `avc calibrate collect`: hand-eye poses spread in elevation, azimuth,
+// distance and roll over the board (rotations about several axes, as AX=ZB needs), then one
+// high pose that keeps the whole board in view while the table turns. Planned with the nominal
+// cell geometry (where the table roughly is from the robot, the nominal hand-eye); every pose
+// is kept only if the UR5 reaches it and the nominal camera sees every corner with a margin.
+
+#include <vector>
+
+#include "core/kinematics/dh_parameters.h"
+#include "sim/cell/cell_truth.h"
+#include "sim/scene/chessboard_scene.h"
+
+namespace avc::calibrator {
+
+struct CalibrationPlanOptions {
+  int hand_eye_poses = 12;
+  int table_angles = 10;  // evenly spaced over a full turn
+};
+
+struct CalibrationPlan {
+  std::vector<kinematics::JointVector> hand_eye;
+  kinematics::JointVector turntable_pose;
+  std::vector<double> table_angles;  // radians
+};
+
+// Throws std::runtime_error when fewer than the asked poses are reachable and fully visible.
+CalibrationPlan PlanCalibration(const sim::CellTruth& nominal, const sim::ChessboardSpec& board,
+                                const kinematics::JointVector& start,
+                                const CalibrationPlanOptions& options);
+
+}  // namespace avc::calibrator
