@@ -22,6 +22,8 @@ inline constexpr std::string_view kTurntableState = "TURNTABLE_STATE";
 inline constexpr std::string_view kTurntableCommand = "TURNTABLE_COMMAND";
 inline constexpr std::string_view kCaptureRequest = "CAPTURE_REQUEST";
 inline constexpr std::string_view kCamera = "CAMERA";
+inline constexpr std::string_view kCameraQuery = "CAMERA_QUERY";
+inline constexpr std::string_view kCalibration = "CALIBRATION";
 inline constexpr std::string_view kViewPlan = "VIEW_PLAN";
 inline constexpr std::string_view kOrchestratorState = "ORCH_STATE";
 inline constexpr std::string_view kProductAck = "PRODUCT_ACK";
@@ -48,6 +50,8 @@ inline constexpr std::array kAll = {kHeartbeat,
                                     kTurntableCommand,
                                     kCaptureRequest,
                                     kCamera,
+                                    kCameraQuery,
+                                    kCalibration,
                                     kViewPlan,
                                     kOrchestratorState,
                                     kProductAck,

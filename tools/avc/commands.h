@@ -22,5 +22,6 @@ void RegisterTurntable(CLI::App& root, int* exit_code);
 void RegisterCamera(CLI::App& root, int* exit_code);
 void RegisterRobot(CLI::App& root, int* exit_code);
 void RegisterCalibrate(CLI::App& root, int* exit_code);
+void RegisterCalibrator(CLI::App& root, int* exit_code);
 
 }  // namespace avc::cli

@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
   avc::cli::RegisterRobot(app, &exit_code);
   avc::cli::RegisterCamera(app, &exit_code);
   avc::cli::RegisterCalibrate(app, &exit_code);
+  avc::cli::RegisterCalibrator(app, &exit_code);
   ShortenListings(app);
   try {
     app.parse(argc, argv);
