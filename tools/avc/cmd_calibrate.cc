@@ -30,6 +30,8 @@ struct CalibrateArgs {
   std::string board = "9x6";
   double square_m = 0.025;
   calibrator::CalibrationPlanOptions plan;
+  // Where the turntable's top centre roughly is in the robot base frame (metres), for planning.
+  std::vector<double> table_in_base;
   std::string output;  // calibration.yaml; default <folder>/calibration.yaml
   bus::BusFlags bus;
 };
@@ -59,6 +61,12 @@ int RunCollect(const CalibrateArgs& args) {
   options.folder = args.folder;
   options.board = ParseBoard(args.board, args.square_m);
   options.plan = args.plan;
+  if (args.table_in_base.size() == 3) {
+    // The table frame is not rotated against the base for planning; only its place matters.
+    options.planning_cell.T_base_table = Eigen::Isometry3d::Identity();
+    options.planning_cell.T_base_table.translation() << args.table_in_base[0],
+        args.table_in_base[1], args.table_in_base[2];
+  }
   bus::Bus bus(bus::ResolveBusOptions(args.bus, "avc-calibrate"));
   bus::EventLoop loop;
   bus.AttachTo(loop);
@@ -105,6 +113,11 @@ void AddCollectFlags(CLI::App& command, CalibrateArgs& args) {
       ->capture_default_str();
   command.add_option("--square", args.square_m, "chessboard square size, metres")
       ->capture_default_str();
+  command
+      .add_option("--table-in-base", args.table_in_base,
+                  "turntable top centre in the robot base frame, x y z metres, measured roughly "
+                  "(default: the simulated cell's 0.55 0 -0.2)")
+      ->expected(3);
   command.add_option("--poses", args.plan.hand_eye_poses, "hand-eye poses")
       ->capture_default_str()
       ->check(CLI::Range(3, 100));
