@@ -1,0 +1,77 @@
+#pragma once
+
+// The paper's hybrid clustering (Gibbs et al. §3.2, Algorithm 2) of a merged plant point cloud
+// with normals into surface patches that can each be triangulated on their regression plane.
+//
+// Start: connected components of proximal points (within the link radius and on the same local
+// surface; Algorithm 2 line 8, "patch"); components smaller than min_cluster_points are outliers.
+// Loop over a work list until every cluster satisfies the constraints:
+//  1. Normal constraint (normal_split.h): a cluster is flat when its RMS distance to the PCA plane,
+//     sqrt(lambda_min), is within noise_factor * noise, or its flatness sqrt(lambda_min /
+//     lambda_mid) is within flatness_ratio. Otherwise it is cut on the 1-D binned array along
+//     lambda_max where the normals either side are most alike. The cut is kept when, after
+//     refinement, it makes the normals more coherent by at least min_normal_gain, the bare cut
+//     by at least half that; else PCA "cannot improve" the cluster (a tube, a smoothly curved
+//     leaf, two touching leaves facing the same way).
+//  2. Separation constraint (divfrp.h): clusters the normals cannot improve are bipartitioned by
+//     the modified DIVFRP when they hold distinct groups at the link radius.
+//  Every new part is split into its connected components; parts smaller than
+//  min_cluster_points are spurious and join the cluster they touch at the end.
+//  3. Outlier / incorrect-patch constraint (reassignment.h): distal points nearer a neighbouring
+//     cluster (centroid, plane and normal) move there.
+//
+// Every threshold is derived from the data (data_scale.h): spacing = median nearest-neighbour
+// distance, noise = median local plane residual; options override them. Deterministic: no
+// randomness, no threading, fixed processing order; output ids are ordered by each cluster's
+// smallest point index.
+
+#include <cstddef>
+
+#include "core/cluster/point_set.h"
+
+namespace avc::cluster {
+
+struct ClusterOptions {
+  // Scales; <= 0 means measure them on the data.
+  double spacing = 0;  // m
+  double noise = 0;    // m
+  // Points closer than link_factor * spacing are neighbours (connectivity, gaps, reassignment).
+  double link_factor = 5.0;
+  // ... and on the same local surface: their offset rises at most asin(link_slope) above both
+  // tangent planes, beyond noise_factor * noise (connected_components.h).
+  double link_slope = 0.5;
+  // 1-D bin width of the normal split, in spacings.
+  double bin_factor = 2.0;
+  // Normal constraint: flat when sqrt(lambda_min) <= noise_factor * noise ...
+  double noise_factor = 3.0;
+  // ... or sqrt(lambda_min / lambda_mid) <= flatness_ratio (a leaf cupped by 1/5 of its width).
+  double flatness_ratio = 0.2;
+  // A normal split must raise normal coherence by this fraction of the points (0.1: two planes
+  // meeting at more than ~37 degrees; a sheet bent smoothly through 60 degrees gains ~0.06).
+  double min_normal_gain = 0.1;
+  int refinement_rounds = 4;
+  // Smallest real cluster; 0 = automatic: 13 points (4 pi, a disc of radius two mean sample
+  // spacings, the least a triangulated patch needs).
+  int min_cluster_points = 0;
+  int reassignment_rounds = 3;
+};
+
+struct ClusterReport {
+  double spacing = 0;  // the values used (measured or given)
+  double noise = 0;
+  double link_radius = 0;
+  int min_cluster_points = 0;
+  size_t initial_components = 0;
+  size_t normal_splits = 0;
+  size_t separation_splits = 0;
+  size_t reassigned_points = 0;
+  size_t outliers = 0;  // points left kUnassigned
+  size_t clusters = 0;
+};
+
+// Throws std::invalid_argument naming the problem for fewer than 3 points, normals missing or of
+// the wrong count, non-finite points or normals, zero normals, or invalid options.
+Assignment ClusterPlant(const PointSet& set, const ClusterOptions& options = {},
+                        ClusterReport* report = nullptr);
+
+}  // namespace avc::cluster

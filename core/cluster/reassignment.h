@@ -1,0 +1,32 @@
+#pragma once
+
+// The outlier / incorrect-patch constraint (paper §3.2 Step 3): points at a cluster's distal edge
+// that belong with a neighbouring cluster move there, and spurious tiny groups join the cluster
+// they touch.
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "core/cluster/point_grid.h"
+
+namespace avc::cluster {
+
+// cluster_of: one id per point (kUnassigned allowed), updated in place. A point p of cluster a
+// moves to a cluster b that has a point within link_radius of p when all hold: p is nearer b's
+// centroid than a's (it is distal in a, the paper's rule), p's normal is better aligned with b's
+// regression-plane normal than with a's, and p is nearer b's plane than a's (proximal). Decisions
+// of a round use the state at its start (order independent); stops after max_rounds or when no
+// point moved. Returns the number of moves.
+size_t ReassignDistalPoints(const PointGrid& grid, const std::vector<Eigen::Vector3f>& points,
+                            const std::vector<Eigen::Vector3f>& normals, float link_radius,
+                            int max_rounds, std::vector<int32_t>* cluster_of);
+
+// Each group of points (a spurious split-off) joins the cluster holding most points within
+// link_radius of the group's points; groups touching no cluster stay kUnassigned (outliers).
+// Returns the number of points left unassigned.
+size_t MergeSpuriousGroups(const PointGrid& grid, const std::vector<Eigen::Vector3f>& points,
+                           const std::vector<std::vector<uint32_t>>& groups, float link_radius,
+                           std::vector<int32_t>* cluster_of);
+
+}  // namespace avc::cluster

@@ -1,0 +1,170 @@
+#include "core/cluster/cluster_plant.h"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <random>
+#include <set>
+#include <stdexcept>
+#include <string>
+
+#include "core/cluster/scoring.h"
+#include "tests/cluster/algorithm/synthetic_sheets.h"
+
+namespace avc::cluster {
+namespace {
+
+using testing::AddCylinder;
+using testing::AddDisc;
+using testing::AddRectangle;
+
+size_t DistinctClusters(const Assignment& assignment) {
+  std::set<int32_t> ids;
+  for (int32_t id : assignment) {
+    if (id != kUnassigned) ids.insert(id);
+  }
+  return ids.size();
+}
+
+std::string ErrorOf(const PointSet& set) {
+  try {
+    ClusterPlant(set);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ClusterPlant, TwoSeparatedPlanesGiveTwoClusters) {
+  std::mt19937_64 rng(11);
+  PointSet set;
+  AddRectangle(&set, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0.06f, 0.06f, 1200, 0, rng);
+  AddRectangle(&set, {0.075f, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0.06f, 0.06f, 1200, 1, rng);
+  ClusterReport report;
+  const Assignment assignment = ClusterPlant(set, {}, &report);
+  EXPECT_EQ(DistinctClusters(assignment), 2u);
+  EXPECT_EQ(report.clusters, 2u);
+  EXPECT_DOUBLE_EQ(CorrectlyClusteredFraction(assignment, set.labels), 1.0);
+  // Spacing of 1200 random points on 36 cm^2: median nearest neighbour ~ 0.47 * 1.7 mm.
+  EXPECT_GT(report.spacing, 0.0005);
+  EXPECT_LT(report.spacing, 0.0012);
+  EXPECT_LT(report.noise, 0.0002);  // flat and noise-free: only sampling shows
+}
+
+TEST(ClusterPlant, StackedParallelPlanesAreSeparatedAlthoughWithinLinkRadius) {
+  std::mt19937_64 rng(12);
+  PointSet set;
+  AddRectangle(&set, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0.05f, 0.05f, 1200, 0, rng);
+  AddRectangle(&set, {0.01f, 0, 0.003f}, {1, 0, 0}, {0, 1, 0}, 0.05f, 0.05f, 1200, 1, rng);
+  ClusterReport report;
+  const Assignment assignment = ClusterPlant(set, {}, &report);
+  ASSERT_GT(report.link_radius, 0.003);  // the layers are closer than the link radius
+  EXPECT_DOUBLE_EQ(CorrectlyClusteredFraction(assignment, set.labels), 1.0);
+}
+
+TEST(ClusterPlant, BentSheetIsSplitByTheNormalConstraint) {
+  std::mt19937_64 rng(13);
+  PointSet set;
+  // Two 6 x 6 cm planes sharing the edge x = 0 at 90 degrees: one connected, non-flat sheet.
+  AddRectangle(&set, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0.06f, 0.06f, 1500, 0, rng);
+  AddRectangle(&set, {0, 0, 0}, {0, 1, 0}, {0, 0, 1}, 0.06f, 0.06f, 1500, 1, rng);
+  ClusterReport report;
+  const Assignment assignment = ClusterPlant(set, {}, &report);
+  EXPECT_EQ(report.initial_components, 1u);
+  EXPECT_GE(report.normal_splits, 1u);
+  EXPECT_EQ(DistinctClusters(assignment), 2u);
+  EXPECT_GE(CorrectlyClusteredFraction(assignment, set.labels), 0.995);
+}
+
+TEST(ClusterPlant, FlatLeafIsNotSplit) {
+  std::mt19937_64 rng(14);
+  PointSet set;
+  AddDisc(&set, {0, 0, 0}, 0.05f, 3000, 0, rng);
+  ClusterReport report;
+  const Assignment assignment = ClusterPlant(set, {}, &report);
+  EXPECT_EQ(report.normal_splits + report.separation_splits, 0u);
+  EXPECT_EQ(DistinctClusters(assignment), 1u);
+}
+
+TEST(ClusterPlant, LeafOnAStemGivesLeafAndStem) {
+  std::mt19937_64 rng(15);
+  PointSet set;
+  // A horizontal leaf resting on the top of a vertical stem (the stem touches it).
+  AddDisc(&set, {0, 0, 0.08f}, 0.04f, 2000, 0, rng);
+  AddCylinder(&set, {0.02f, 0, 0}, 0.003f, 0.08f, 600, 1, rng);
+  ClusterReport report;
+  const Assignment assignment = ClusterPlant(set, {}, &report);
+  EXPECT_EQ(report.initial_components, 1u);
+  EXPECT_EQ(DistinctClusters(assignment), 2u);
+  EXPECT_GE(CorrectlyClusteredFraction(assignment, set.labels), 0.99);
+}
+
+TEST(ClusterPlant, IsolatedPointsAreOutliers) {
+  std::mt19937_64 rng(16);
+  PointSet set;
+  AddDisc(&set, {0, 0, 0}, 0.04f, 1500, 0, rng);
+  set.points.push_back({0.2f, 0.2f, 0.2f});
+  set.normals.push_back(Eigen::Vector3f::UnitX());
+  ClusterReport report;
+  const Assignment assignment = ClusterPlant(set, {}, &report);
+  EXPECT_EQ(assignment.back(), kUnassigned);
+  EXPECT_EQ(report.outliers, 1u);
+}
+
+TEST(ClusterPlant, SameInputSameAssignment) {
+  std::mt19937_64 rng(17);
+  PointSet set;
+  AddRectangle(&set, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0.06f, 0.06f, 1500, 0, rng);
+  AddRectangle(&set, {0, 0, 0}, {0, 1, 0}, {0, 0, 1}, 0.06f, 0.06f, 1500, 1, rng);
+  EXPECT_EQ(ClusterPlant(set), ClusterPlant(set));
+}
+
+TEST(ClusterPlant, GivenScalesAreUsed) {
+  std::mt19937_64 rng(18);
+  PointSet set;
+  AddDisc(&set, {0, 0, 0}, 0.04f, 1000, 0, rng);
+  ClusterOptions options;
+  options.spacing = 0.002;
+  options.noise = 0.0001;
+  ClusterReport report;
+  ClusterPlant(set, options, &report);
+  EXPECT_DOUBLE_EQ(report.spacing, 0.002);
+  EXPECT_DOUBLE_EQ(report.noise, 0.0001);
+  EXPECT_NEAR(report.link_radius, options.link_factor * 0.002, 1e-9);
+}
+
+TEST(ClusterPlant, BadInputIsRejectedWithAClearMessage) {
+  PointSet empty;
+  empty.name = "empty";
+  EXPECT_NE(ErrorOf(empty).find("at least 3 points, got 0"), std::string::npos) << ErrorOf(empty);
+
+  PointSet two;
+  two.points = {{0, 0, 0}, {1, 0, 0}};
+  two.normals = {{0, 0, 1}, {0, 0, 1}};
+  EXPECT_NE(ErrorOf(two).find("got 2"), std::string::npos);
+
+  PointSet nan_point;
+  nan_point.name = "slice";
+  nan_point.points = {{0, 0, 0}, {std::numeric_limits<float>::quiet_NaN(), 0, 0}, {0, 1, 0}};
+  nan_point.normals = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}};
+  EXPECT_NE(ErrorOf(nan_point).find("'slice': point 1 is not finite"), std::string::npos)
+      << ErrorOf(nan_point);
+
+  PointSet missing = nan_point;
+  missing.points[1] = {1, 0, 0};
+  missing.normals.clear();
+  EXPECT_NE(ErrorOf(missing).find("0 normals for 3 points"), std::string::npos) << ErrorOf(missing);
+
+  PointSet zero_normal = missing;
+  zero_normal.normals = {{0, 0, 1}, {0, 0, 0}, {0, 0, 1}};
+  EXPECT_NE(ErrorOf(zero_normal).find("normal 1 is zero"), std::string::npos);
+
+  PointSet good = missing;
+  good.normals = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}};
+  ClusterOptions bad_options;
+  bad_options.link_factor = 0;
+  EXPECT_THROW(ClusterPlant(good, bad_options), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace avc::cluster
