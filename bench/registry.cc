@@ -2,6 +2,7 @@
 
 #include "bench/bus/bus_bench.h"
 #include "bench/calibration/calibration_bench.h"
+#include "bench/clustering/clustering_bench.h"
 #include "bench/devices/devices_bench.h"
 #include "bench/render/render_bench.h"
 
@@ -26,6 +27,10 @@ const std::vector<Benchmark>& AllBenchmarks() {
        "hand-eye (closed form, Ceres, OpenCV SHAH) and turntable axis (paper, closed form, Ceres) "
        "Monte-Carlo, and the calibration end to end in the simulated cell",
        RunCalibrationBenchmark},
+      {"clustering",
+       "the paper's Table 2 replica: Algorithm 2 against k-means, iPDDP, dense and sparse "
+       "spectral, PCL region growing on six labelled plant point sets",
+       RunClusteringBenchmark},
   };
   return benchmarks;
 }

@@ -30,6 +30,8 @@ avc_find(OpenCV DEBIAN libopencv-dev)
 avc_find(Ceres DEBIAN libceres-dev)
 avc_find(octomap DEBIAN liboctomap-dev)
 avc_find(CGAL DEBIAN libcgal-dev)
+# Header-only Lanczos eigensolvers on Eigen (sparse spectral clustering baseline).
+avc_find(spectra DEBIAN libspectra-dev)
 # PCL's config is slow and noisy; only its presence is checked here, components are found by the
 # modules that use them.
 avc_find(PCL DEBIAN libpcl-dev COMPONENTS common)
