@@ -1,8 +1,10 @@
 // Real-data check on OpenCV's sample chessboard set (13 left views, 9x6, 25 mm) against the
 // reference left_intrinsics.yml that OpenCV's calibration sample produced from them.
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -10,6 +12,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "core/calibration/board/board_pose.h"
 #include "core/calibration/board/chessboard_detection.h"
 #include "core/calibration/board/intrinsics_calibration.h"
 #include "tests/support/test_support.h"
@@ -113,6 +116,57 @@ TEST(RealChessboard, DefaultRefinementFitsTheImagesBetter) {
   EXPECT_LT(std::abs(run->dcx), 1.0);
   EXPECT_LT(std::abs(run->dcy), 2.0);
   for (const auto& view : run->result.report.views) EXPECT_FALSE(view.rejected) << view.name;
+}
+
+// Which intrinsics are closer to the truth, with no truth at hand: leave one view out, calibrate
+// on the other twelve, and measure how well the result predicts the held-out view's corners
+// (found either way). The default's intrinsics predict held-out views better on both corner sets
+// (measured: 0.182 vs 0.197 px on default corners, 0.302 vs 0.311 px on the sample's), so the 3 px
+// gap to left_intrinsics.yml is the reference's large refinement window, not an error of ours.
+TEST(RealChessboard, DefaultIntrinsicsPredictHeldOutViewsBetterThanTheReferenceSettings) {
+  const std::filesystem::path folder = SharedData() / "chessboard_opencv";
+  if (!std::filesystem::exists(folder / "left_intrinsics.yml")) {
+    GTEST_SKIP() << "shared data not found under " << SharedData();
+  }
+  std::vector<std::filesystem::path> images;
+  for (int i = 1; i <= 14; ++i) {
+    const auto path = folder / fmt::format("left{:02d}.jpg", i);
+    if (std::filesystem::exists(path)) images.push_back(path);
+  }
+  ASSERT_EQ(images.size(), 13u);
+  const Chessboard board{9, 6, 0.025};
+  DetectionOptions sample_refinement;
+  sample_refinement.refine_half_window = 11;
+  sample_refinement.refine_iterations = 30;
+  std::vector<BoardDetection> ours, sample;
+  for (const auto& path : images) {
+    ours.push_back(DetectChessboardInFile(path, board, {}));
+    sample.push_back(DetectChessboardInFile(path, board, sample_refinement));
+  }
+  IntrinsicsOptions keep_all;
+  keep_all.outlier_factor = 1e9;
+  keep_all.min_coverage = 0;
+  // Mean held-out RMS on [our corners, the sample's corners] for intrinsics trained on `train`.
+  const auto held_out = [&](const std::vector<BoardDetection>& train) {
+    std::array<double, 2> sum{0, 0};
+    for (size_t out = 0; out < images.size(); ++out) {
+      std::vector<BoardDetection> rest;
+      for (size_t i = 0; i < images.size(); ++i) {
+        if (i != out) rest.push_back(train[i]);
+      }
+      const camera::Intrinsics k = CalibrateIntrinsics(rest, board, keep_all).intrinsics;
+      sum[0] += EstimateBoardPose(board.CornerPoints(), ours[out].corners, k, "ours").rms_px;
+      sum[1] += EstimateBoardPose(board.CornerPoints(), sample[out].corners, k, "sample").rms_px;
+    }
+    return std::array<double, 2>{sum[0] / images.size(), sum[1] / images.size()};
+  };
+  const std::array<double, 2> default_trained = held_out(ours);
+  const std::array<double, 2> sample_trained = held_out(sample);
+  std::cout << "held-out RMS, default-trained: " << default_trained[0] << " / "
+            << default_trained[1] << " px; sample-trained: " << sample_trained[0] << " / "
+            << sample_trained[1] << " px\n";
+  EXPECT_LT(default_trained[0], sample_trained[0]);
+  EXPECT_LT(default_trained[1], sample_trained[1]);
 }
 
 }  // namespace
