@@ -131,6 +131,22 @@ TEST(LaunchFile, DemoFilesAreValidAndTheSameInBothFormats) {
   EXPECT_EQ(toml.processes[1].host, "") << "the demo runs on any host";
 }
 
+TEST(LaunchFile, SimulatedCellLaunchFilesAreValid) {
+  const fs::path launch = testing::SourceDir() / "launch";
+  for (const char* file : {"sim-cell.toml", "sim-calibration.toml"}) {
+    SCOPED_TRACE(file);
+    const LaunchSpec spec = LoadLaunchFile((launch / file).string());
+    std::vector<std::string> names, subcommands;
+    for (const auto& process : spec.processes) {
+      names.push_back(process.name);
+      subcommands.push_back(process.args.at(0));
+    }
+    EXPECT_EQ(names, (std::vector<std::string>{"sim", "robot", "turntable", "camera", "recorder"}));
+    EXPECT_EQ(subcommands,
+              (std::vector<std::string>{"sim", "robot", "turntable", "camera", "record"}));
+  }
+}
+
 TEST(LaunchFile, DefaultsApplyToKeysLeftOut) {
   for (const auto& [text, file] : std::vector<std::pair<std::string, std::string>>{
            {"[[process]]\nname = \"p\"\ncommand = \"sh\"\n", "/a/b/min.toml"},
