@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -20,8 +21,12 @@ struct BenchArgs {
 };
 
 void PrintBenchmarks() {
+  size_t width = 0;
   for (const bench::Benchmark& benchmark : bench::AllBenchmarks()) {
-    std::cout << fmt::format("{:<10} {}\n", benchmark.name, benchmark.description);
+    width = std::max(width, benchmark.name.size());
+  }
+  for (const bench::Benchmark& benchmark : bench::AllBenchmarks()) {
+    std::cout << fmt::format("{:<{}}  {}\n", benchmark.name, width, benchmark.description);
   }
 }
 
