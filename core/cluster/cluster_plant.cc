@@ -10,6 +10,7 @@
 #include "core/cluster/connected_components.h"
 #include "core/cluster/data_scale.h"
 #include "core/cluster/divfrp.h"
+#include "core/cluster/neck_split.h"
 #include "core/cluster/normal_split.h"
 #include "core/cluster/pca.h"
 #include "core/cluster/point_grid.h"
@@ -49,6 +50,11 @@ void CheckOptions(const ClusterOptions& o) {
           "min_normal_gain >= 0");
   Require(o.min_cluster_points >= 0 && o.refinement_rounds >= 0 && o.reassignment_rounds >= 0,
           "min_cluster_points, refinement_rounds and reassignment_rounds must be >= 0");
+  Require(o.neck_neighbours >= 1 && o.neck_lanczos_steps >= 2,
+          "neck_neighbours must be >= 1 and neck_lanczos_steps >= 2");
+  Require(std::isfinite(o.max_neck_ratio) && o.max_neck_ratio >= 0 &&
+              std::isfinite(o.neck_bend_factor) && o.neck_bend_factor >= 0,
+          "max_neck_ratio and neck_bend_factor must be finite and >= 0");
 }
 
 bool IsFlat(const PrincipalAxes& axes, double noise_tolerance, double flatness_ratio) {
@@ -91,11 +97,18 @@ Assignment ClusterPlant(const PointSet& set, const ClusterOptions& options, Clus
   link.normals = &normals;
   link.slope = static_cast<float>(options.link_slope);
   link.allowance = static_cast<float>(noise_tolerance);
+  const NeighbourLists neighbours(grid, points, link);
+  NeckRule neck_rule;
+  neck_rule.neighbours = options.neck_neighbours;
+  neck_rule.lanczos_steps = options.neck_lanczos_steps;
+  neck_rule.min_side = min_points;
+  neck_rule.bend_factor = options.neck_bend_factor;
+  neck_rule.max_neck_ratio = options.max_neck_ratio;
   std::vector<int32_t> scratch(points.size(), -1);
   std::deque<std::vector<uint32_t>> work;
   std::vector<std::vector<uint32_t>> spurious;
   auto enqueue_components = [&](const std::vector<uint32_t>& part) {
-    for (auto& component : ConnectedComponents(grid, points, part, link, &scratch)) {
+    for (auto& component : ConnectedComponents(neighbours, part, &scratch)) {
       if (component.size() < min_points) {
         spurious.push_back(std::move(component));
       } else {
@@ -106,7 +119,7 @@ Assignment ClusterPlant(const PointSet& set, const ClusterOptions& options, Clus
 
   std::vector<uint32_t> all(points.size());
   for (size_t i = 0; i < all.size(); ++i) all[i] = static_cast<uint32_t>(i);
-  for (auto& component : ConnectedComponents(grid, points, all, link, &scratch)) {
+  for (auto& component : ConnectedComponents(neighbours, all, &scratch)) {
     if (component.size() < min_points) {
       out.outliers += component.size();  // isolated from everything: outliers, never merged
     } else {
@@ -143,6 +156,13 @@ Assignment ClusterPlant(const PointSet& set, const ClusterOptions& options, Clus
     if (!groups.empty()) {
       ++out.separation_splits;
       for (const auto& group : groups) enqueue_components(group);
+      continue;
+    }
+    // Touching groups that neither the normals nor a gap separate: cut at a narrow neck.
+    const NeckCut neck = SplitAtNeck(neighbours, points, &normals, cluster, neck_rule, &scratch);
+    if (!neck.groups.empty()) {
+      ++out.neck_splits;
+      for (const auto& group : neck.groups) enqueue_components(group);
       continue;
     }
     accepted.push_back(std::move(cluster));

@@ -82,7 +82,39 @@ TEST(ClusterPlant, FlatLeafIsNotSplit) {
   AddDisc(&set, {0, 0, 0}, 0.05f, 3000, 0, rng);
   ClusterReport report;
   const Assignment assignment = ClusterPlant(set, {}, &report);
-  EXPECT_EQ(report.normal_splits + report.separation_splits, 0u);
+  EXPECT_EQ(report.normal_splits + report.separation_splits + report.neck_splits, 0u);
+  EXPECT_EQ(DistinctClusters(assignment), 1u);
+}
+
+TEST(ClusterPlant, TouchingCoplanarLeavesAreCutAtTheirNeck) {
+  std::mt19937_64 rng(21);
+  PointSet set;
+  // Two coplanar discs overlapping by 1 mm: one flat connected component, no gap, same normals.
+  AddDisc(&set, {0, 0, 0}, 0.03f, 1500, 0, rng);
+  AddDisc(&set, {0.059f, 0, 0}, 0.03f, 1500, 1, rng);
+  ClusterReport report;
+  const Assignment assignment = ClusterPlant(set, {}, &report);
+  EXPECT_EQ(report.initial_components, 1u);
+  EXPECT_GE(report.neck_splits, 1u);
+  EXPECT_EQ(DistinctClusters(assignment), 2u);
+  EXPECT_GE(CorrectlyClusteredFraction(assignment, set.labels), 0.98);
+
+  ClusterOptions without;
+  without.max_neck_ratio = 0;
+  EXPECT_EQ(DistinctClusters(ClusterPlant(set, without)), 1u);
+}
+
+TEST(ClusterPlant, ElongatedLeafIsNotCutAtItsWidth) {
+  std::mt19937_64 rng(22);
+  PointSet set;
+  // An elliptic blade three times longer than wide: a cut across it is as long as the blade is
+  // wide, no neck. (A uniform strip six times longer than wide is at the limit: see
+  // cluster_plant.h.)
+  AddDisc(&set, {0, 0, 0}, 0.03f, 3000, 0, rng);
+  for (Eigen::Vector3f& p : set.points) p.x() *= 3.0f;
+  ClusterReport report;
+  const Assignment assignment = ClusterPlant(set, {}, &report);
+  EXPECT_EQ(report.neck_splits, 0u);
   EXPECT_EQ(DistinctClusters(assignment), 1u);
 }
 

@@ -1,0 +1,47 @@
+#pragma once
+
+// Separation at a narrow neck (Algorithm 2 Step 2, the separation constraint, for groups that
+// touch): two leaves that touch along a short contact are one connected component at the link
+// radius, so DIVFRP finds no gap, and when they face almost the same way the normal step gains
+// too little to cut them. On the k-nearest-neighbour graph of the cluster (same-surface links,
+// edges weakened where the two normals bend much more than is typical between neighbours) the
+// spectral (Fiedler) order is swept for the cut of least conductance; the cut is a neck when the
+// contact it crosses is short compared with the narrower side's width. A single leaf or a stem
+// cut across crosses its full width and is kept whole, however elongated it is.
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "core/cluster/connected_components.h"
+#include "core/cluster/neighbour_lists.h"
+
+namespace avc::cluster {
+
+struct NeckRule {
+  int neighbours = 10;     // k of the k-nearest-neighbour graph (within the link radius)
+  int lanczos_steps = 40;  // Krylov dimension of the Fiedler vector
+  size_t min_side = 13;    // each side holds at least this many points
+  // Edge weight exp(-b / (bend_factor * median b)) with b = 1 - |n_i . n_j| ~ angle^2 / 2: an edge
+  // bent sqrt(bend_factor) times more than the cluster's median neighbour angle weighs 1/e.
+  // 0 = unweighted.
+  double bend_factor = 16.0;
+  // Split when the contact's length (estimated from the cut weight, the degree and the neighbour
+  // reach) is at most this fraction of the narrower side's width (2 sqrt(3 lambda_mid)).
+  double max_neck_ratio = 0.5;
+};
+
+struct NeckCut {
+  std::vector<std::vector<uint32_t>> groups;  // two sorted groups, or empty: no neck
+  double ratio = 0;  // neck ratio of the least-conductance cut (infinity: no cut allowed)
+};
+
+// neighbours built from points with link; normals weight the edges (nullptr: unweighted).
+// scratch must hold one int per point and all -1; it is restored before returning.
+NeckCut SplitAtNeck(const NeighbourLists& neighbours, const std::vector<Eigen::Vector3f>& points,
+                    const std::vector<Eigen::Vector3f>* normals,
+                    const std::vector<uint32_t>& cluster, const NeckRule& rule,
+                    std::vector<int32_t>* scratch);
+
+}  // namespace avc::cluster
