@@ -7,6 +7,7 @@
 // leaves stacked a few millimetres apart are not linked although they are within the radius.
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -29,9 +30,45 @@ struct LinkRule {
   }
 };
 
-// Components of subset (indices into grid's points), each sorted ascending, ordered by their
-// smallest index (deterministic). scratch must hold one int per point and all -1; it is
+// Components of subset under a neighbour relation: for_each_neighbour(i, visit) calls visit(j)
+// for every neighbour j of point i. Each component is sorted ascending and they are ordered by
+// their smallest index (deterministic). scratch must hold one int per point and all -1; it is
 // restored before returning.
+template <class ForEachNeighbour>
+std::vector<std::vector<uint32_t>> ComponentsBy(const std::vector<uint32_t>& subset,
+                                                std::vector<int32_t>* scratch,
+                                                const ForEachNeighbour& for_each_neighbour) {
+  constexpr int32_t kMember = 0;   // in the subset, not reached yet
+  constexpr int32_t kReached = 1;  // in the subset, already in a component
+  std::vector<int32_t>& mark = *scratch;
+  for (uint32_t i : subset) mark[i] = kMember;
+  std::vector<uint32_t> sorted = subset;
+  std::sort(sorted.begin(), sorted.end());
+  std::vector<std::vector<uint32_t>> components;
+  std::vector<uint32_t> frontier;
+  for (uint32_t seed : sorted) {
+    if (mark[seed] != kMember) continue;
+    std::vector<uint32_t> component{seed};
+    mark[seed] = kReached;
+    frontier.assign(1, seed);
+    while (!frontier.empty()) {
+      const uint32_t i = frontier.back();
+      frontier.pop_back();
+      for_each_neighbour(i, [&](uint32_t j) {
+        if (mark[j] != kMember) return;
+        mark[j] = kReached;
+        component.push_back(j);
+        frontier.push_back(j);
+      });
+    }
+    std::sort(component.begin(), component.end());
+    components.push_back(std::move(component));
+  }
+  for (uint32_t i : subset) mark[i] = -1;
+  return components;
+}
+
+// Components of subset (indices into grid's points) linked by `link`, as ComponentsBy.
 std::vector<std::vector<uint32_t>> ConnectedComponents(const PointGrid& grid,
                                                        const std::vector<Eigen::Vector3f>& points,
                                                        const std::vector<uint32_t>& subset,
