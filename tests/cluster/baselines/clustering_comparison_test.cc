@@ -24,7 +24,7 @@ double SameIdFraction(const Assignment& assignment, const std::vector<int32_t>& 
   return static_cast<double>(same) / static_cast<double>(labels.size());
 }
 
-ComparisonOptions StubOptions() {
+ComparisonOptions OptionsWithSimpleCallbacks() {
   ComparisonOptions options;
   options.ours = Oracle;
   options.ours_name = "oracle";
@@ -37,7 +37,7 @@ ComparisonOptions StubOptions() {
 TEST(ClusteringComparison, ReportsEveryMethodOnEverySet) {
   const std::vector<PointSet> sets = {cluster::testing::Blobs(2, 100, 1),
                                       cluster::testing::OrthogonalPatches(100, 2)};
-  const nlohmann::json report = RunClusteringComparison(sets, StubOptions());
+  const nlohmann::json report = RunClusteringComparison(sets, OptionsWithSimpleCallbacks());
 
   EXPECT_EQ(report["benchmark"], "clustering");
   EXPECT_EQ(report["repeats"], 2);
@@ -77,7 +77,7 @@ TEST(ClusteringComparison, ReportsEveryMethodOnEverySet) {
 }
 
 TEST(ClusteringComparison, MethodErrorsAreReportedNotThrown) {
-  ComparisonOptions options = StubOptions();
+  ComparisonOptions options = OptionsWithSimpleCallbacks();
   options.ours = [](const PointSet&) -> Assignment { throw std::runtime_error("broken method"); };
   const nlohmann::json report =
       RunClusteringComparison({cluster::testing::Blobs(2, 30, 1)}, options);
@@ -90,8 +90,8 @@ TEST(ClusteringComparison, MethodErrorsAreReportedNotThrown) {
 TEST(ClusteringComparison, UnlabelledSetNeedsExplicitK) {
   PointSet set = cluster::testing::Blobs(2, 30, 1);
   set.labels.clear();
-  EXPECT_THROW(RunClusteringComparison({set}, StubOptions()), std::invalid_argument);
-  ComparisonOptions options = StubOptions();
+  EXPECT_THROW(RunClusteringComparison({set}, OptionsWithSimpleCallbacks()), std::invalid_argument);
+  ComparisonOptions options = OptionsWithSimpleCallbacks();
   options.ours = nullptr;  // no "ours" row, no ratios
   options.clusters = 2;
   options.repeats = 1;
@@ -104,7 +104,8 @@ TEST(ClusteringComparison, UnlabelledSetNeedsExplicitK) {
 TEST(ClusteringTable, PrintsOneRowPerMethodAndTheRatios) {
   const std::vector<PointSet> sets = {cluster::testing::Blobs(2, 100, 1),
                                       cluster::testing::OrthogonalPatches(100, 2)};
-  const std::string table = FormatClusteringTable(RunClusteringComparison(sets, StubOptions()));
+  const std::string table =
+      FormatClusteringTable(RunClusteringComparison(sets, OptionsWithSimpleCallbacks()));
   EXPECT_NE(table.find("blobs (200 pts, K=2)"), std::string::npos) << table;
   EXPECT_NE(table.find("patches (300 pts, K=3)"), std::string::npos) << table;
   EXPECT_NE(table.find("oracle"), std::string::npos);

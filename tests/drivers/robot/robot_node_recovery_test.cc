@@ -81,7 +81,7 @@ TEST(RobotNodeRecovery, NodeStartedBeforeTheControllerConnectsWhenItAppears) {
   EXPECT_EQ(h.Run(RobotNodeHarness::MoveJoints("first", kTarget)).status, Ack::STATUS_DONE);
 }
 
-// The fake orchestrator: a real HeartbeatPublisher at 100 ms on a loop of its own, which the
+// The stand-in orchestrator: a real HeartbeatPublisher at 100 ms on a loop of its own, which the
 // test runs while the orchestrator is "alive" and simply stops running to kill it silently.
 class WatchdogTest : public ::testing::Test {
  protected:
