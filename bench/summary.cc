@@ -22,6 +22,7 @@ Summary Summarize(std::vector<double> values) {
   summary.median = values.size() % 2 == 1
                        ? values[values.size() / 2]
                        : 0.5 * (values[values.size() / 2 - 1] + values[values.size() / 2]);
+  summary.p90 = NearestRank(values, 90);
   summary.p99 = NearestRank(values, 99);
   summary.max = values.back();
   return summary;

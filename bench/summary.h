@@ -10,6 +10,7 @@ namespace avc::bench {
 struct Summary {
   size_t count = 0;
   double median = 0;
+  double p90 = 0;
   double p99 = 0;
   double max = 0;
 };

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "bench/devices/cell_processes.h"
+#include "bench/summary.h"
 #include "core/bus/bus.h"
 #include "core/calibration/cell/calibration_yaml.h"
 #include "core/calibration/pipeline/calibrate_cell.h"
@@ -22,13 +23,8 @@ using std::chrono::milliseconds;
 constexpr double kDeg = std::numbers::pi / 180;
 
 nlohmann::json Stats(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const auto at = [&](double q) {
-    return values.empty()
-               ? 0.0
-               : values[std::min(values.size() - 1, static_cast<size_t>(q * values.size()))];
-  };
-  return {{"median", at(0.5)}, {"p90", at(0.9)}, {"max", values.empty() ? 0.0 : values.back()}};
+  const Summary summary = Summarize(std::move(values));
+  return {{"median", summary.median}, {"p90", summary.p90}, {"max", summary.max}};
 }
 
 double RotationDeg(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b) {

@@ -1,7 +1,7 @@
 #pragma once
 
 // Median, 90th percentile and maximum of a sample of errors, as the hand-eye benchmark reports
-// (bench/summary.h has no p90).
+// them (bench/summary.h computes them).
 
 #include <nlohmann/json.hpp>
 #include <vector>
