@@ -14,12 +14,7 @@
 namespace avc::geometry {
 namespace {
 
-std::filesystem::path SharedData() {
-  if (const char* dir = std::getenv("AVC_SHARED_DATA"); dir != nullptr && *dir != '\0') {
-    return dir;
-  }
-  return avc::testing::SourceDir() / ".." / "shared" / "data";
-}
+std::filesystem::path SharedData() { return avc::testing::SharedDataDir(); }
 
 struct RealMesh {
   const char* path;  // under shared/data

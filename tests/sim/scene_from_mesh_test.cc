@@ -21,12 +21,7 @@ namespace {
 
 namespace labels = geometry::labels;
 
-std::filesystem::path SharedData() {
-  if (const char* dir = std::getenv("AVC_SHARED_DATA"); dir != nullptr && *dir != '\0') {
-    return dir;
-  }
-  return avc::testing::SourceDir() / ".." / "shared" / "data";
-}
+std::filesystem::path SharedData() { return avc::testing::SharedDataDir(); }
 
 // An axis-aligned box (closed, 12 triangles) off-centre, in millimetres.
 geometry::Mesh Box(const Eigen::Vector3f& min, const Eigen::Vector3f& max) {

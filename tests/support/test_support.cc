@@ -33,6 +33,12 @@ std::filesystem::path FromEnv(const char* name) {
 
 std::filesystem::path BuildDir() { return FromEnv("AVC_BUILD_DIR"); }
 std::filesystem::path SourceDir() { return FromEnv("AVC_SOURCE_DIR"); }
+std::filesystem::path SharedDataDir() {
+  if (const char* dir = std::getenv("AVC_SHARED_DATA"); dir != nullptr && *dir != '\0') {
+    return dir;
+  }
+  return SourceDir() / ".." / "shared" / "data";
+}
 std::filesystem::path Executable(const std::string& name) { return BuildDir() / "bin" / name; }
 
 std::string ReadFile(const std::filesystem::path& path) {

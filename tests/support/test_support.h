@@ -26,6 +26,9 @@ class TempDir {
 // The build tree (ctest sets AVC_BUILD_DIR) and the source tree (AVC_SOURCE_DIR).
 std::filesystem::path BuildDir();
 std::filesystem::path SourceDir();
+// The project's shared real data (AVC_SHARED_DATA, else ../shared/data beside the source tree).
+// Tests that need it skip with a message when it is absent.
+std::filesystem::path SharedDataDir();
 // build/bin/<name>: our executables.
 std::filesystem::path Executable(const std::string& name);
 

@@ -24,10 +24,7 @@
 namespace avc::calibration {
 namespace {
 
-std::filesystem::path SharedData() {
-  if (const char* env = std::getenv("AVC_SHARED_DATA")) return env;
-  return avc::testing::SourceDir() / ".." / "shared" / "data";
-}
+std::filesystem::path SharedData() { return avc::testing::SharedDataDir(); }
 
 // franka_pose_rPe_i.yaml: six "- [value]" lines, tx ty tz (m) and a rotation vector; base <- e.e.
 Eigen::Isometry3d ReadRobotPose(const std::filesystem::path& path) {

@@ -20,10 +20,7 @@
 namespace avc::calibration {
 namespace {
 
-std::filesystem::path SharedData() {
-  if (const char* env = std::getenv("AVC_SHARED_DATA")) return env;
-  return avc::testing::SourceDir() / ".." / "shared" / "data";
-}
+std::filesystem::path SharedData() { return avc::testing::SharedDataDir(); }
 
 struct RealRun {
   IntrinsicsCalibration result;
