@@ -1,0 +1,185 @@
+#include "core/dataset/dataset_reader.h"
+
+#include <fmt/format.h>
+
+#include <Eigen/Geometry>
+#include <fstream>
+#include <opencv2/imgcodecs.hpp>
+#include <sstream>
+#include <stdexcept>
+
+#include "core/camera/camera_io.h"
+
+namespace avc::dataset {
+namespace fs = std::filesystem;
+namespace {
+
+std::vector<fs::path> MiddleburyParameterFiles(const fs::path& dir) {
+  std::vector<fs::path> found;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(dir, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() > 8 && name.ends_with("_par.txt")) found.push_back(entry.path());
+  }
+  std::sort(found.begin(), found.end());
+  return found;
+}
+
+// The folder holding cameras.txt + images.txt, or empty.
+fs::path ColmapModelDir(const fs::path& dir) {
+  for (const fs::path& candidate : {dir, dir / "colmap", dir / "sparse", dir / "sparse" / "0"}) {
+    if (fs::is_regular_file(candidate / "cameras.txt") &&
+        fs::is_regular_file(candidate / "images.txt")) {
+      return candidate;
+    }
+  }
+  return {};
+}
+
+[[noreturn]] void Fail(const fs::path& file, const std::string& what) {
+  throw std::runtime_error(fmt::format("{}: {}", file.string(), what));
+}
+
+std::vector<camera::NamedCamera> ReadMiddleburyParameters(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) Fail(file, "cannot open");
+  std::string line;
+  int line_number = 0;
+  size_t count = 0;
+  while (std::getline(in, line)) {
+    ++line_number;
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    std::istringstream first(line);
+    if (!(first >> count))
+      Fail(file, fmt::format("line {}: expected the number of images", line_number));
+    break;
+  }
+  std::vector<camera::NamedCamera> cameras;
+  while (cameras.size() < count && std::getline(in, line)) {
+    ++line_number;
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    std::istringstream fields(line);
+    camera::NamedCamera named;
+    double v[21];
+    fields >> named.name;
+    for (double& x : v) fields >> x;
+    if (!fields) {
+      Fail(file, fmt::format("line {}: expected a name and 21 numbers (K, R, t)", line_number));
+    }
+    for (double x : v) {
+      if (!std::isfinite(x))
+        Fail(file, fmt::format("line {}: a number is not finite", line_number));
+    }
+    if (std::abs(v[1]) > 1e-9 || std::abs(v[3]) > 1e-9 || std::abs(v[6]) > 1e-9 ||
+        std::abs(v[7]) > 1e-9 || std::abs(v[8] - 1) > 1e-9) {
+      Fail(file, fmt::format("line {}: K must be [fx 0 cx; 0 fy cy; 0 0 1]", line_number));
+    }
+    auto& k = named.camera.intrinsics;
+    k.fx = v[0];
+    k.cx = v[2];
+    k.fy = v[4];
+    k.cy = v[5];
+    Eigen::Matrix3d r;
+    r << v[9], v[10], v[11], v[12], v[13], v[14], v[15], v[16], v[17];
+    if ((r.transpose() * r - Eigen::Matrix3d::Identity()).norm() > 1e-5 || r.determinant() < 0) {
+      Fail(file, fmt::format("line {}: R is not a rotation", line_number));
+    }
+    // Re-orthonormalise the printed digits so that the pose is an exact isometry.
+    const Eigen::Quaterniond q(r);
+    named.camera.T_cam_world.linear() = q.normalized().toRotationMatrix();
+    named.camera.T_cam_world.translation() = Eigen::Vector3d(v[18], v[19], v[20]);
+    cameras.push_back(std::move(named));
+  }
+  if (cameras.size() != count) {
+    Fail(file, fmt::format("announces {} images but lists {}", count, cameras.size()));
+  }
+  return cameras;
+}
+
+cv::Mat ReadImage(const fs::path& path, int flags, const std::string& what) {
+  if (!fs::is_regular_file(path)) Fail(path, what + " not found");
+  cv::Mat image = cv::imread(path.string(), flags);
+  if (image.empty()) Fail(path, what + " cannot be decoded");
+  return image;
+}
+
+fs::path MaskPath(const fs::path& masks_dir, const std::string& image_name) {
+  const fs::path same = masks_dir / image_name;
+  if (fs::is_regular_file(same)) return same;
+  fs::path png = same;
+  png.replace_extension(".png");
+  if (fs::is_regular_file(png)) return png;
+  return {};
+}
+
+}  // namespace
+
+std::string DetectDatasetFormat(const fs::path& dir) {
+  if (fs::is_regular_file(dir / "cameras.json")) return "scan";
+  if (!ColmapModelDir(dir).empty()) return "colmap";
+  if (!MiddleburyParameterFiles(dir).empty()) return "middlebury";
+  return {};
+}
+
+ViewSet ReadDataset(const fs::path& dir, const ReadOptions& options) {
+  if (options.stride < 1) throw std::invalid_argument("stride must be at least 1");
+  if (!fs::is_directory(dir)) Fail(dir, "not a directory");
+  ViewSet set;
+  set.directory = dir;
+  set.format = DetectDatasetFormat(dir);
+  std::vector<camera::NamedCamera> cameras;
+  fs::path images_dir = dir;
+  if (set.format == "scan") {
+    cameras = camera::ReadCamerasJson(dir / "cameras.json");
+    images_dir = dir / "images";
+    if (fs::is_regular_file(dir / "gt_mesh.ply")) set.ground_truth_mesh = dir / "gt_mesh.ply";
+  } else if (set.format == "colmap") {
+    const fs::path model = ColmapModelDir(dir);
+    cameras = camera::ReadColmapText(model);
+    if (fs::is_directory(dir / "images")) images_dir = dir / "images";
+  } else if (set.format == "middlebury") {
+    const auto files = MiddleburyParameterFiles(dir);
+    if (files.size() > 1) {
+      Fail(dir, fmt::format("holds {} *_par.txt files; keep one per directory", files.size()));
+    }
+    cameras = ReadMiddleburyParameters(files.front());
+  } else {
+    Fail(dir,
+         "no cameras.json (scan directory), cameras.txt + images.txt (COLMAP text model) or "
+         "*_par.txt (Middlebury) found");
+  }
+  if (cameras.empty()) Fail(dir, "lists no images");
+  const fs::path masks_dir = dir / "masks";
+  for (size_t i = 0; i < cameras.size(); i += static_cast<size_t>(options.stride)) {
+    View view;
+    view.name = cameras[i].name;
+    view.camera = cameras[i].camera;
+    view.image = ReadImage(images_dir / view.name, cv::IMREAD_COLOR, "image");
+    auto& k = view.camera.intrinsics;
+    if (k.width == 0 && k.height == 0) {  // Middlebury gives no size: the image's own
+      k.width = view.image.cols;
+      k.height = view.image.rows;
+    }
+    if (view.image.cols != k.width || view.image.rows != k.height) {
+      Fail(images_dir / view.name, fmt::format("is {}x{} but its camera is {}x{}", view.image.cols,
+                                               view.image.rows, k.width, k.height));
+    }
+    if (const std::string problem = k.Validate(); !problem.empty()) {
+      Fail(dir, fmt::format("camera of {}: {}", view.name, problem));
+    }
+    if (options.load_masks && fs::is_directory(masks_dir)) {
+      if (const fs::path mask_file = MaskPath(masks_dir, view.name); !mask_file.empty()) {
+        cv::Mat mask = ReadImage(mask_file, cv::IMREAD_GRAYSCALE, "mask");
+        if (mask.size() != view.image.size()) {
+          Fail(mask_file, fmt::format("is {}x{} but its image is {}x{}", mask.cols, mask.rows,
+                                      view.image.cols, view.image.rows));
+        }
+        view.mask = mask > 0;
+      }
+    }
+    set.views.push_back(std::move(view));
+  }
+  return set;
+}
+
+}  // namespace avc::dataset
