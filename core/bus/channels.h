@@ -27,6 +27,7 @@ inline constexpr std::string_view kCalibration = "CALIBRATION";
 inline constexpr std::string_view kViewPlan = "VIEW_PLAN";
 inline constexpr std::string_view kOrchestratorState = "ORCH_STATE";
 inline constexpr std::string_view kProductAck = "PRODUCT_ACK";
+inline constexpr std::string_view kBuildCommand = "BUILD_COMMAND";
 // Product channels (bulk URL, product_chunk_t).
 inline constexpr std::string_view kProductImage = "PRODUCT/IMAGE";
 inline constexpr std::string_view kProductPreview = "PRODUCT/PREVIEW";
@@ -34,6 +35,7 @@ inline constexpr std::string_view kProductCloud = "PRODUCT/CLOUD";
 inline constexpr std::string_view kProductMesh = "PRODUCT/MESH";
 inline constexpr std::string_view kProductVoxelMap = "PRODUCT/VOXEL_MAP";
 inline constexpr std::string_view kProductBench = "PRODUCT/BENCH";
+inline constexpr std::string_view kProductMvsPoints = "PRODUCT/MVS_POINTS";
 // Prefix shared by every product channel.
 inline constexpr std::string_view kProductPrefix = "PRODUCT/";
 
@@ -55,11 +57,13 @@ inline constexpr std::array kAll = {kHeartbeat,
                                     kViewPlan,
                                     kOrchestratorState,
                                     kProductAck,
+                                    kBuildCommand,
                                     kProductImage,
                                     kProductPreview,
                                     kProductCloud,
                                     kProductMesh,
                                     kProductVoxelMap,
-                                    kProductBench};
+                                    kProductBench,
+                                    kProductMvsPoints};
 
 }  // namespace avc::channels

@@ -23,5 +23,7 @@ void RegisterCamera(CLI::App& root, int* exit_code);
 void RegisterRobot(CLI::App& root, int* exit_code);
 void RegisterCalibrate(CLI::App& root, int* exit_code);
 void RegisterCalibrator(CLI::App& root, int* exit_code);
+void RegisterReconstruct(CLI::App& root, int* exit_code);
+void RegisterBuilder(CLI::App& root, int* exit_code);
 
 }  // namespace avc::cli

@@ -49,6 +49,8 @@ int main(int argc, char** argv) {
   avc::cli::RegisterCamera(app, &exit_code);
   avc::cli::RegisterCalibrate(app, &exit_code);
   avc::cli::RegisterCalibrator(app, &exit_code);
+  avc::cli::RegisterReconstruct(app, &exit_code);
+  avc::cli::RegisterBuilder(app, &exit_code);
   ShortenListings(app);
   try {
     app.parse(argc, argv);

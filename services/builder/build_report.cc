@@ -1,0 +1,119 @@
+#include "services/builder/build_report.h"
+
+#include <fmt/format.h>
+#include <sys/resource.h>
+
+#include "core/geometry/mesh_io.h"
+
+namespace avc::builder {
+namespace {
+
+double PeakMemoryMb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // kB on Linux
+}
+
+nlohmann::ordered_json StatsJson(const eval::DistanceStats& stats) {
+  return {{"count", stats.count},
+          {"mean_m", stats.mean},
+          {"rmse_m", stats.rmse},
+          {"median_m", stats.median},
+          {"p90_m", stats.p90}};
+}
+
+}  // namespace
+
+BuildReport MakeBuildReport(const Reconstruction& reconstruction, MvsMethod method,
+                            const std::filesystem::path& ground_truth_mesh) {
+  BuildReport report;
+  report.method = MvsMethodName(method);
+  report.images = reconstruction.masks.views.size();
+  report.points = reconstruction.points.size();
+  report.points_per_image =
+      report.images == 0 ? 0 : static_cast<double>(report.points) / report.images;
+  report.voxel_size = reconstruction.proxy.voxel_size();
+  report.voxels = reconstruction.proxy.Counts();
+  report.timings = reconstruction.timings;
+  report.masks = reconstruction.masks;
+  if (!ground_truth_mesh.empty() && report.points > 0) {
+    const geometry::Mesh truth = geometry::ReadMesh(ground_truth_mesh);
+    eval::EvalOptions options;
+    options.thresholds = {0.0005, 0.001, 0.002, 0.005};
+    eval::EvalResult result = eval::EvaluatePointCloud(truth, reconstruction.points.cloud, options);
+    // The per-point arrays are for plots; the report keeps the summaries.
+    result.accuracy_distances.clear();
+    result.nearest_gt_face.clear();
+    result.completeness_distances.clear();
+    result.gt_samples = {};
+    report.accuracy = std::move(result);
+  }
+  report.peak_memory_mb = PeakMemoryMb();
+  return report;
+}
+
+nlohmann::ordered_json BuildReportToJson(const BuildReport& report) {
+  nlohmann::ordered_json json = {{"method", report.method},
+                                 {"images", report.images},
+                                 {"points", report.points},
+                                 {"points_per_image", report.points_per_image},
+                                 {"proxy",
+                                  {{"voxel_size_m", report.voxel_size},
+                                   {"occupied", report.voxels.occupied},
+                                   {"free", report.voxels.free},
+                                   {"unknown", report.voxels.unknown}}}};
+  if (report.accuracy) {
+    const eval::EvalResult& a = *report.accuracy;
+    nlohmann::ordered_json scores = nlohmann::ordered_json::array();
+    for (const eval::ThresholdScore& s : a.scores) {
+      scores.push_back({{"threshold_m", s.threshold},
+                        {"precision", s.precision},
+                        {"recall", s.recall},
+                        {"fscore", s.fscore}});
+    }
+    json["ground_truth"] = {{"accuracy", StatsJson(a.accuracy)},
+                            {"completeness", StatsJson(a.completeness)},
+                            {"scores", scores}};
+  }
+  nlohmann::ordered_json masks = nlohmann::ordered_json::array();
+  for (const segmentation::ViewMask& m : report.masks.views) {
+    masks.push_back({{"view", m.view},
+                     {"given", m.given},
+                     {"method", m.given ? "given" : segmentation::MaskMethodName(m.method)},
+                     {"plant_fraction", m.plant_fraction}});
+  }
+  json["masks"] = masks;
+  nlohmann::ordered_json timings = nlohmann::ordered_json::object();
+  for (const StageTime& t : report.timings) timings[t.stage + "_s"] = t.seconds;
+  json["timings"] = timings;
+  json["peak_memory_mb"] = report.peak_memory_mb;
+  return json;
+}
+
+std::string BuildReportToText(const BuildReport& report) {
+  std::string text = fmt::format(
+      "{} images, {} points ({:.0f} per image, {}); proxy {:.2f} mm voxels, {} occupied\n",
+      report.images, report.points, report.points_per_image, report.method, report.voxel_size * 1e3,
+      report.voxels.occupied);
+  if (report.accuracy) {
+    const eval::EvalResult& a = *report.accuracy;
+    text += fmt::format("against the ground truth: mean distance {:.3f} mm (RMS {:.3f} mm)",
+                        a.accuracy.mean * 1e3, a.accuracy.rmse * 1e3);
+    for (const eval::ThresholdScore& s : a.scores) {
+      text += fmt::format("; P/R@{:g}mm {:.3f}/{:.3f}", s.threshold * 1e3, s.precision, s.recall);
+    }
+    text += "\n";
+  }
+  double total = 0;
+  std::string stages;
+  for (const StageTime& t : report.timings) {
+    total += t.seconds;
+    stages += fmt::format(" {} {:.2f} s,", t.stage, t.seconds);
+  }
+  if (!stages.empty()) stages.pop_back();
+  text += fmt::format("time {:.2f} s ({}); peak memory {:.0f} MB\n", total, stages.substr(1),
+                      report.peak_memory_mb);
+  return text;
+}
+
+}  // namespace avc::builder

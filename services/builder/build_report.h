@@ -1,0 +1,40 @@
+#pragma once
+
+// What a reconstruction run reports (the paper's Table 1 per run): images, points, points per
+// image and, when the ground truth is known (simulated scans), the points' distance to it and
+// precision / recall; plus the proxy's size, the masks and the time per stage.
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "core/eval/metrics.h"
+#include "services/builder/reconstruction.h"
+
+namespace avc::builder {
+
+struct BuildReport {
+  std::string method;
+  size_t images = 0;
+  size_t points = 0;
+  double points_per_image = 0;
+  double voxel_size = 0;
+  ppr::VoxelCounts voxels;
+  std::vector<StageTime> timings;
+  double peak_memory_mb = 0;  // of this process so far
+  segmentation::MaskSummary masks;
+  // Present when a ground-truth mesh was given.
+  std::optional<eval::EvalResult> accuracy;
+};
+
+// Evaluates against `ground_truth_mesh` when it is not empty (throws naming the file if it
+// cannot be read).
+BuildReport MakeBuildReport(const Reconstruction& reconstruction, MvsMethod method,
+                            const std::filesystem::path& ground_truth_mesh);
+
+nlohmann::ordered_json BuildReportToJson(const BuildReport& report);
+// A few lines for a terminal.
+std::string BuildReportToText(const BuildReport& report);
+
+}  // namespace avc::builder

@@ -1,0 +1,58 @@
+#pragma once
+
+// The builder's work on a set of calibrated images (paper §2.2–3): lens distortion removed,
+// plant masks (given or automatic), the plant proxy carved from them coarse to fine, then
+// multi-view stereo bounded by the proxy. Used offline by `avc reconstruct` and `avc bench mvs`,
+// and live by the builder node.
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/dataset/view.h"
+#include "core/mvs/mvs_points.h"
+#include "core/mvs/patch/patch_mvs.h"
+#include "core/mvs/plane_sweep/plane_sweep_mvs.h"
+#include "core/ppr/plant_proxy.h"
+#include "core/segmentation/fill_masks.h"
+
+namespace avc::builder {
+
+enum class MvsMethod { kPatch, kPlaneSweep, kNone };
+
+// "patch", "plane-sweep", "none"; parsing throws std::invalid_argument listing the choices.
+std::string MvsMethodName(MvsMethod method);
+MvsMethod ParseMvsMethod(const std::string& name);
+
+struct ReconstructOptions {
+  segmentation::MaskOptions masks;
+  ppr::ProxyOptions proxy;
+  MvsMethod method = MvsMethod::kPatch;
+  mvs::PatchMvsOptions patch;
+  mvs::PlaneSweepOptions sweep;
+};
+
+struct StageTime {
+  std::string stage;  // "undistort", "masks", "proxy", "mvs"
+  double seconds = 0;
+};
+
+struct Reconstruction {
+  ppr::PlantProxy proxy;
+  mvs::MvsPoints points;  // empty when the method is kNone
+  segmentation::MaskSummary masks;
+  std::vector<StageTime> timings;  // wall clock, for reports only (never in the products)
+};
+
+// stage: what is running; done/total: its progress.
+using ReconstructProgress =
+    std::function<void(const std::string& stage, size_t done, size_t total)>;
+
+// Changes `set` in place (undistorted images, masks filled). Throws std::invalid_argument or
+// std::runtime_error naming the view or setting at fault (no views, a bad camera, no plant
+// found in any image, ...).
+Reconstruction Reconstruct(dataset::ViewSet& set, const ReconstructOptions& options,
+                           const ReconstructProgress& progress = {});
+
+}  // namespace avc::builder

@@ -1,0 +1,115 @@
+// avc reconstruct: the reconstruction half of a scan on images with known cameras (a scan
+// directory, a COLMAP text model or a Middlebury set): masks, plant proxy, multi-view stereo,
+// written with a scan directory's file names.
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <iostream>
+#include <memory>
+
+#include "core/dataset/dataset_reader.h"
+#include "services/builder/build_report.h"
+#include "services/builder/reconstruction.h"
+#include "services/builder/reconstruction_output.h"
+#include "tools/avc/commands.h"
+#include "tools/avc/run_guarded.h"
+
+namespace avc::cli {
+namespace {
+
+struct ReconstructArgs {
+  std::string dataset;
+  std::string output;
+  std::string method = "patch";
+  std::string masks = "auto";
+  int level = -1;
+  int stride = 1;
+  int tolerance = -1;
+  double voxel_mm = 0;
+  bool no_evaluation = false;
+  bool overwrite = false;
+  bool json = false;
+};
+
+segmentation::MaskMethod ParseMaskMethod(const std::string& name) {
+  for (auto method : {segmentation::MaskMethod::kAuto, segmentation::MaskMethod::kExcessGreen,
+                      segmentation::MaskMethod::kBackgroundDistance}) {
+    if (name == segmentation::MaskMethodName(method)) return method;
+  }
+  throw std::invalid_argument("--masks: unknown method '" + name +
+                              "' (choose auto, excess_green or background_distance)");
+}
+
+void ShowProgress(const std::string& stage, size_t done, size_t total) {
+  const bool terminal = isatty(STDERR_FILENO);
+  if (!terminal && done != total) return;  // logs get one line per finished stage
+  std::cerr << fmt::format("{:<24} {}/{}", stage, done, total) << (terminal ? "\x1b[K\r" : "\n")
+            << std::flush;
+}
+
+int RunReconstruct(const ReconstructArgs& args) {
+  builder::ReconstructOptions options;
+  options.method = builder::ParseMvsMethod(args.method);
+  options.masks.method = ParseMaskMethod(args.masks);
+  options.patch.level = args.level;
+  options.sweep.level = args.level;
+  if (args.tolerance >= 0) options.proxy.background_votes_allowed = args.tolerance;
+  options.proxy.final_voxel_size = args.voxel_mm * 1e-3;
+
+  dataset::ViewSet set = dataset::ReadDataset(args.dataset, {.stride = args.stride});
+  std::cerr << fmt::format("{}: {} views ({})\n", args.dataset, set.views.size(), set.format);
+  const std::filesystem::path output = builder::ChooseOutputDirectory(args.dataset, args.output);
+  const builder::Reconstruction reconstruction = builder::Reconstruct(set, options, ShowProgress);
+  if (isatty(STDERR_FILENO)) std::cerr << "\x1b[K";
+  const builder::BuildReport report = builder::MakeBuildReport(
+      reconstruction, options.method,
+      args.no_evaluation ? std::filesystem::path() : set.ground_truth_mesh);
+  const auto files =
+      builder::WriteReconstruction(output, set, reconstruction, report, args.overwrite);
+  std::cout << builder::BuildReportToText(report);
+  std::cout << fmt::format("wrote {} files to {}\n", files.size(), output.string());
+  if (args.json) std::cout << builder::BuildReportToJson(report).dump() << "\n";
+  return 0;
+}
+
+}  // namespace
+
+void RegisterReconstruct(CLI::App& root, int* exit_code) {
+  auto args = std::make_shared<ReconstructArgs>();
+  CLI::App* command = root.add_subcommand(
+      "reconstruct",
+      "Reconstruct a plant from images with known cameras: plant masks (automatic unless\n"
+      "masks/<image name> are given), the plant proxy (tolerant octree carving, ppr.bt) and\n"
+      "multi-view stereo points (points.ply, with confidence and the images that see each\n"
+      "point).\n"
+      "Datasets: a scan directory (cameras.json + images/), a COLMAP text model (cameras.txt +\n"
+      "images.txt, in the folder or in sparse/ or colmap/) or a Middlebury set (*_par.txt).\n"
+      "A simulated scan's ground truth (gt_mesh.ply) is used to report accuracy.\n"
+      "\n"
+      "Example: avc reconstruct --dataset scans/rosette --output rosette-result");
+  command->add_option("--dataset", args->dataset, "folder with the images and cameras")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  command->add_option("--output", args->output,
+                      "folder for the results (default: <dataset>-reconstruction here)");
+  command->add_option("--mvs", args->method, "patch (PMVS-style), plane-sweep or none")
+      ->capture_default_str();
+  command->add_option("--masks", args->masks, "auto, excess_green or background_distance")
+      ->capture_default_str();
+  command
+      ->add_option("--level", args->level,
+                   "image pyramid level for MVS (0 full size, 1 half; -1 automatic)")
+      ->capture_default_str();
+  command->add_option("--stride", args->stride, "use every Nth image")->capture_default_str();
+  command->add_option("--tolerance", args->tolerance,
+                      "background votes a proxy voxel survives (-1: the default)");
+  command->add_option("--voxel-mm", args->voxel_mm,
+                      "final proxy voxel size in mm (0: from the scene's size)");
+  command->add_flag("--no-evaluation", args->no_evaluation, "skip the comparison with gt_mesh.ply");
+  command->add_flag("--overwrite", args->overwrite, "replace results already in --output");
+  command->add_flag("--json", args->json, "print the run's report as JSON last");
+  SetGuardedRun(command, exit_code, [args] { return RunReconstruct(*args); });
+}
+
+}  // namespace avc::cli
