@@ -4,6 +4,7 @@
 #include "bench/calibration/calibration_bench.h"
 #include "bench/clustering/clustering_bench.h"
 #include "bench/devices/devices_bench.h"
+#include "bench/mvs/mvs_bench.h"
 #include "bench/render/render_bench.h"
 
 namespace avc::bench {
@@ -31,6 +32,11 @@ const std::vector<Benchmark>& AllBenchmarks() {
        "the paper's Table 2 replica: Algorithm 2 against k-means, iPDDP, dense and sparse "
        "spectral, PCL region growing on six labelled plant point sets",
        RunClusteringBenchmark},
+      {"mvs",
+       "the builder's patch MVS against PMVS2's published run and a plane-sweep ZNCC comparator "
+       "on the Middlebury dinoSparseRing and on simulated plants (30 views, 1280x960): points per "
+       "image, inside-silhouette fraction, precision/recall, wall time, peak memory",
+       RunMvsBenchmark},
   };
   return benchmarks;
 }
