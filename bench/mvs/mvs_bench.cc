@@ -9,6 +9,7 @@
 
 #include "bench/mvs/isolated_run.h"
 #include "bench/mvs/mvs_bench_case.h"
+#include "bench/mvs/ppr_bench_case.h"
 #include "bench/registry.h"
 #include "bench/summary.h"
 #include "sim/dataset/render_dataset.h"
@@ -112,6 +113,65 @@ void PrintDinoTable(const std::vector<Row>& rows) {
   }
 }
 
+struct PprRow {
+  PprCase ppr_case;
+  std::vector<IsolatedResult> runs;
+};
+
+double PprMedian(const PprRow& row, const char* key) {
+  std::vector<double> values;
+  for (const IsolatedResult& run : row.runs) {
+    if (run.ok && run.result.contains(key)) values.push_back(run.result[key].get<double>());
+  }
+  return values.empty() ? std::nan("") : Summarize(values).median;
+}
+
+PprRow RunPprRow(const PprCase& ppr_case, int repeats) {
+  PprRow row{ppr_case, {}};
+  for (int r = 0; r < repeats; ++r) {
+    std::cerr << fmt::format("  {} proxy at {:.0f} mm run {}/{}\n", ppr_case.dataset_name,
+                             1e3 * ppr_case.voxel_size, r + 1, repeats);
+    row.runs.push_back(RunIsolated([&] { return RunPprCase(ppr_case); }));
+    if (!row.runs.back().ok) {
+      std::cerr << "    failed: " << row.runs.back().error << "\n";
+      break;
+    }
+  }
+  return row;
+}
+
+nlohmann::json PprRowJson(const PprRow& row) {
+  nlohmann::json json = {{"dataset", row.ppr_case.dataset_name}, {"runs", row.runs.size()}};
+  for (const char* key : {"views", "voxel_size_m", "occupied", "truth_voxels", "bounds_seconds",
+                          "carve_seconds", "iou", "voxel_precision", "voxel_recall"}) {
+    const double value = PprMedian(row, key);
+    if (!std::isnan(value)) json[key] = value;
+  }
+  for (const IsolatedResult& run : row.runs) {
+    if (!run.ok) json["error"] = run.error;
+  }
+  return json;
+}
+
+void PrintPprTable(const std::vector<PprRow>& rows) {
+  std::cout << "\nPlant proxy at 2 mm from the automatic masks, against the plant's ground-truth "
+               "surface voxelised on the proxy's grid (medians)\n";
+  std::cout << fmt::format("{:<10} {:>6} {:>9} {:>9} {:>6} {:>9} {:>9} {:>8} {:>8}\n", "plant",
+                           "views", "occupied", "truth", "IoU", "precision", "recall", "box s",
+                           "carve s");
+  for (const PprRow& row : rows) {
+    std::cout << fmt::format(
+        "{:<10} {:>6} {:>9} {:>9} {:>6} {:>9} {:>9} {:>8} {:>8}{}\n", row.ppr_case.dataset_name,
+        Cell(PprMedian(row, "views"), "{:.0f}"), Cell(PprMedian(row, "occupied"), "{:.0f}"),
+        Cell(PprMedian(row, "truth_voxels"), "{:.0f}"), Cell(PprMedian(row, "iou"), "{:.3f}"),
+        Cell(PprMedian(row, "voxel_precision"), "{:.3f}"),
+        Cell(PprMedian(row, "voxel_recall"), "{:.3f}"),
+        Cell(PprMedian(row, "bounds_seconds"), "{:.3f}"),
+        Cell(PprMedian(row, "carve_seconds"), "{:.3f}"),
+        row.runs.empty() || row.runs.back().ok ? "" : "  FAILED");
+  }
+}
+
 void PrintSimTable(const std::vector<Row>& rows) {
   std::cout << "\nSimulated plants, 30 views 1280x960, against the plant's ground truth\n";
   std::cout << fmt::format("{:<10} {:<12} {:>8} {:>8} {:>7} {:>7} {:>8} {:>7} {:>8}\n", "plant",
@@ -139,6 +199,7 @@ int RunMvsBenchmark(const std::vector<std::string>& arguments) {
   bool no_dino = false;
   bool scaling = true;
   bool json = false;
+  bool proxy_only = false;
   std::string work_dir;
   CLI::App app{
       "avc bench mvs: the builder's patch MVS against PMVS2's published run and the\n"
@@ -163,6 +224,8 @@ int RunMvsBenchmark(const std::vector<std::string>& arguments) {
                "skip the 1x/4x/16x pixel scaling runs (rosette at levels 2, 1, 0)");
   app.add_option("--work-dir", work_dir,
                  "where the simulated scans are rendered (default: a temporary folder, removed)");
+  app.add_flag("--proxy-only", proxy_only,
+               "on the simulated plants, measure the plant proxy only (no MVS)");
   app.add_flag("--json", json, "print the results as one JSON line at the end");
   if (const auto exit_code = ParseBenchmarkArguments(app, arguments)) return *exit_code;
   presets.erase(std::remove(presets.begin(), presets.end(), std::string()), presets.end());
@@ -191,6 +254,7 @@ int RunMvsBenchmark(const std::vector<std::string>& arguments) {
                             : fs::path(work_dir);
   std::vector<Row> sim_rows;
   std::vector<Row> scaling_rows;
+  std::vector<PprRow> ppr_rows;
   for (const std::string& preset : presets) {
     const fs::path scan = work / preset;
     if (!fs::exists(scan / "cameras.json")) {
@@ -210,6 +274,8 @@ int RunMvsBenchmark(const std::vector<std::string>& arguments) {
         continue;
       }
     }
+    ppr_rows.push_back(RunPprRow({preset, scan, 0.002}, repeats));
+    if (proxy_only) continue;
     for (builder::MvsMethod method :
          {builder::MvsMethod::kPatch, builder::MvsMethod::kPlaneSweep}) {
       sim_rows.push_back(RunRow({preset, scan, method, -1, false}, sim_repeats));
@@ -221,6 +287,7 @@ int RunMvsBenchmark(const std::vector<std::string>& arguments) {
       }
     }
   }
+  if (!ppr_rows.empty()) PrintPprTable(ppr_rows);
   if (!sim_rows.empty()) PrintSimTable(sim_rows);
   if (!scaling_rows.empty()) {
     std::cout << "\nScaling (patch MVS, " << presets.front()
@@ -238,11 +305,15 @@ int RunMvsBenchmark(const std::vector<std::string>& arguments) {
     for (const Row& row : *rows) list.push_back(RowJson(row));
     report[key] = list;
   }
+  nlohmann::json ppr = nlohmann::json::array();
+  for (const PprRow& row : ppr_rows) ppr.push_back(PprRowJson(row));
+  report["proxy"] = ppr;
   if (json) std::cout << report.dump() << "\n";
   bool failed = false;
   for (const auto* rows : {&dino_rows, &sim_rows, &scaling_rows}) {
     for (const Row& row : *rows) failed = failed || row.runs.empty() || !row.runs.back().ok;
   }
+  for (const PprRow& row : ppr_rows) failed = failed || row.runs.empty() || !row.runs.back().ok;
   return failed ? 1 : 0;
 }
 

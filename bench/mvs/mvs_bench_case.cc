@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "bench/mvs/plant_organs.h"
 #include "bench/mvs/silhouette_agreement.h"
 #include "core/dataset/dataset_reader.h"
 #include "core/eval/metrics.h"
@@ -9,25 +10,6 @@
 #include "core/segmentation/threshold_silhouette.h"
 
 namespace avc::bench {
-namespace {
-
-// The faces of the plant's organs only; pot, soil and anything unlabelled go.
-geometry::Mesh PlantOrgans(const geometry::Mesh& mesh) {
-  geometry::Mesh plant;
-  plant.vertices = mesh.vertices;
-  for (size_t f = 0; f < mesh.faces.size(); ++f) {
-    const int32_t label =
-        mesh.face_labels.empty() ? geometry::labels::kLeafBase : mesh.face_labels[f];
-    if (label == geometry::labels::kStem || label == geometry::labels::kPetiole ||
-        geometry::labels::IsLeaf(label)) {
-      plant.faces.push_back(mesh.faces[f]);
-      if (!mesh.face_labels.empty()) plant.face_labels.push_back(label);
-    }
-  }
-  return plant;
-}
-
-}  // namespace
 
 nlohmann::json RunMvsCase(const MvsCase& mvs_case) {
   dataset::ViewSet set = dataset::ReadDataset(mvs_case.dataset);

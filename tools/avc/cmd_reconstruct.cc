@@ -3,6 +3,7 @@
 // written with a scan directory's file names.
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <unistd.h>
 
 #include <iostream>
@@ -10,6 +11,7 @@
 
 #include "core/dataset/dataset_reader.h"
 #include "services/builder/build_report.h"
+#include "services/builder/option_overrides.h"
 #include "services/builder/reconstruction.h"
 #include "services/builder/reconstruction_output.h"
 #include "tools/avc/commands.h"
@@ -30,6 +32,7 @@ struct ReconstructArgs {
   bool no_evaluation = false;
   bool overwrite = false;
   bool json = false;
+  std::vector<std::string> overrides;
 };
 
 segmentation::MaskMethod ParseMaskMethod(const std::string& name) {
@@ -56,6 +59,7 @@ int RunReconstruct(const ReconstructArgs& args) {
   options.sweep.level = args.level;
   if (args.tolerance >= 0) options.proxy.background_votes_allowed = args.tolerance;
   options.proxy.final_voxel_size = args.voxel_mm * 1e-3;
+  for (const std::string& assignment : args.overrides) builder::ApplyOverride(assignment, &options);
 
   dataset::ViewSet set = dataset::ReadDataset(args.dataset, {.stride = args.stride});
   std::cerr << fmt::format("{}: {} views ({})\n", args.dataset, set.views.size(), set.format);
@@ -106,6 +110,13 @@ void RegisterReconstruct(CLI::App& root, int* exit_code) {
                       "background votes a proxy voxel survives (-1: the default)");
   command->add_option("--voxel-mm", args->voxel_mm,
                       "final proxy voxel size in mm (0: from the scene's size)");
+  command
+      ->add_option("--set", args->overrides,
+                   "override a parameter, e.g. --set patch.window=7 (repeatable; applied after "
+                   "the flags above)")
+      ->type_name("SECTION.FIELD=VALUE");
+  command->footer("Parameters --set knows: " +
+                  fmt::format("{}", fmt::join(builder::OverrideNames(), ", ")));
   command->add_flag("--no-evaluation", args->no_evaluation, "skip the comparison with gt_mesh.ply");
   command->add_flag("--overwrite", args->overwrite, "replace results already in --output");
   command->add_flag("--json", args->json, "print the run's report as JSON last");
