@@ -91,7 +91,7 @@ bool PatchRefiner::SampleNormalised(const Frame& frame, uint32_t image_index, fl
   const float max_u = static_cast<float>(image.width() - 1);
   const float max_v = static_cast<float>(image.height() - 1);
   float* o = out;
-  float sum = 0;
+  float sum[3] = {0, 0, 0};
   for (int b = -half; b <= half; ++b) {
     const float rx = hc.x() + b * hy.x(), ry = hc.y() + b * hy.y(), rz = hc.z() + b * hy.z();
     for (int a = -half; a <= half; ++a) {
@@ -101,7 +101,7 @@ bool PatchRefiner::SampleNormalised(const Frame& frame, uint32_t image_index, fl
       const float u = (rx + a * hx.x()) * inverse, v = (ry + a * hx.y()) * inverse;
       if (!(u >= 0 && v >= 0 && u <= max_u && v <= max_v)) return false;
       image.Sample(u, v, o);
-      sum += o[0] + o[1] + o[2];
+      for (int c = 0; c < 3; ++c) sum[c] += o[c];
       o += 3;
     }
   }
@@ -114,11 +114,15 @@ bool PatchRefiner::SampleNormalised(const Frame& frame, uint32_t image_index, fl
       }
     }
   }
+  // Each channel loses its own mean (as PMVS normalises): with one mean over R, G and B the
+  // difference between the channels would count as texture, and a uniform green leaf would
+  // correlate perfectly with any other piece of the same green at any depth.
   const int n = static_cast<int>(o - out);
-  const float mean = sum / static_cast<float>(n);
+  const float pixels = static_cast<float>(n / 3);
+  const float mean[3] = {sum[0] / pixels, sum[1] / pixels, sum[2] / pixels};
   double squares = 0;
   for (int i = 0; i < n; ++i) {
-    out[i] -= mean;
+    out[i] -= mean[i % 3];
     squares += static_cast<double>(out[i]) * out[i];
   }
   if (squares <= 1e-12 || std::sqrt(squares / n) < min_deviation) return false;

@@ -54,6 +54,30 @@ TEST(PatchMvsPlane, PointsLieOnThePlaneWithItsNormal) {
   EXPECT_LT(dark, points.size() / 100);
 }
 
+TEST(PatchMvsPlane, AUniformlyColouredRegionGivesNoPoints) {
+  // The plane's half x > 2 cm painted one green: R, G and B differ, but nothing varies. A patch
+  // there has no texture and must not match (its channels' different levels are not texture).
+  std::vector<dataset::View> views = PlaneViews();
+  for (dataset::View& view : views) {
+    const Eigen::Matrix3d r = view.camera.T_cam_world.linear();
+    const Eigen::Vector3d centre = view.camera.Centre();
+    for (int v = 0; v < view.image.rows; ++v) {
+      for (int u = 0; u < view.image.cols; ++u) {
+        const Eigen::Vector3d ray =
+            r.transpose() * view.camera.intrinsics.Ray({double(u), double(v)});
+        const Eigen::Vector3d p = centre - centre.z() / ray.z() * ray;
+        if (p.x() > 0.02) view.image.at<cv::Vec3b>(v, u) = cv::Vec3b(40, 120, 30);
+      }
+    }
+  }
+  const MvsPoints points = RunPatchMvs(views, {}, PatchMvsOptions{});
+  ASSERT_GT(points.size(), 2000u);  // the textured half still works
+  size_t inside_uniform = 0;
+  // Half a window (2 px, ~3.5 mm) plus a cell from the edge, patches still see texture.
+  for (const auto& p : points.cloud.positions) inside_uniform += p.x() > 0.03f;
+  EXPECT_LT(inside_uniform, points.size() / 100) << inside_uniform << " of " << points.size();
+}
+
 TEST(PatchMvsPlane, SameBytesForOneAndTwoThreads) {
   auto run = [](int threads) {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);

@@ -21,12 +21,12 @@ TEST(PatchMvsSim, PrecisionAndRecallOnARenderedPlant) {
   eval_options.thresholds = {0.001, 0.002};
   const auto result = eval::EvaluatePointCloud(scan.ground_truth, points.cloud, eval_options);
   ASSERT_EQ(result.scores.size(), 2u);
-  // Measured (rosette, 12 views 640x480, level 0): 14,190 points, P(1 mm) 0.297, R(2 mm)
-  // 0.171 (P(5 mm) 0.77, R(10 mm) 0.79) - far below the 30-view 1280x960 goal; the floors
-  // guard against regressions of what the method does today.
-  EXPECT_GT(points.size(), 12000u);
-  EXPECT_GT(result.scores[0].precision, 0.26);
-  EXPECT_GT(result.scores[1].recall, 0.14);
+  // Measured (rosette, 12 views 640x480, level 0, pixels of about 1.2 mm): 8,644 points,
+  // P(1 mm) 0.442, R(2 mm) 0.130. With one mean over the three colour channels (a bug) NCC
+  // matched uniform green at any depth: 14,190 points at P(1 mm) 0.297.
+  EXPECT_GT(points.size(), 7500u);
+  EXPECT_GT(result.scores[0].precision, 0.40);
+  EXPECT_GT(result.scores[1].recall, 0.11);
 }
 
 }  // namespace
