@@ -143,7 +143,8 @@ PprRow RunPprRow(const PprCase& ppr_case, int repeats) {
 nlohmann::json PprRowJson(const PprRow& row) {
   nlohmann::json json = {{"dataset", row.ppr_case.dataset_name}, {"runs", row.runs.size()}};
   for (const char* key : {"views", "voxel_size_m", "occupied", "truth_voxels", "bounds_seconds",
-                          "carve_seconds", "iou", "voxel_precision", "voxel_recall"}) {
+                          "carve_seconds", "iou", "voxel_precision", "voxel_recall",
+                          "ideal_occupied", "ideal_iou", "iou_with_ideal"}) {
     const double value = PprMedian(row, key);
     if (!std::isnan(value)) json[key] = value;
   }
@@ -156,18 +157,20 @@ nlohmann::json PprRowJson(const PprRow& row) {
 void PrintPprTable(const std::vector<PprRow>& rows) {
   std::cout << "\nPlant proxy at 2 mm from the automatic masks, against the plant's ground-truth "
                "surface voxelised on the proxy's grid (medians)\n";
-  std::cout << fmt::format("{:<10} {:>6} {:>9} {:>9} {:>6} {:>9} {:>9} {:>8} {:>8}\n", "plant",
-                           "views", "occupied", "truth", "IoU", "precision", "recall", "box s",
-                           "carve s");
+  std::cout << fmt::format("{:<10} {:>6} {:>9} {:>9} {:>6} {:>9} {:>9} {:>8} {:>8} {:>9} {:>9}\n",
+                           "plant", "views", "occupied", "truth", "IoU", "precision", "recall",
+                           "box s", "carve s", "ideal IoU", "vs ideal");
   for (const PprRow& row : rows) {
     std::cout << fmt::format(
-        "{:<10} {:>6} {:>9} {:>9} {:>6} {:>9} {:>9} {:>8} {:>8}{}\n", row.ppr_case.dataset_name,
-        Cell(PprMedian(row, "views"), "{:.0f}"), Cell(PprMedian(row, "occupied"), "{:.0f}"),
-        Cell(PprMedian(row, "truth_voxels"), "{:.0f}"), Cell(PprMedian(row, "iou"), "{:.3f}"),
-        Cell(PprMedian(row, "voxel_precision"), "{:.3f}"),
+        "{:<10} {:>6} {:>9} {:>9} {:>6} {:>9} {:>9} {:>8} {:>8} {:>9} {:>9}{}\n",
+        row.ppr_case.dataset_name, Cell(PprMedian(row, "views"), "{:.0f}"),
+        Cell(PprMedian(row, "occupied"), "{:.0f}"), Cell(PprMedian(row, "truth_voxels"), "{:.0f}"),
+        Cell(PprMedian(row, "iou"), "{:.3f}"), Cell(PprMedian(row, "voxel_precision"), "{:.3f}"),
         Cell(PprMedian(row, "voxel_recall"), "{:.3f}"),
         Cell(PprMedian(row, "bounds_seconds"), "{:.3f}"),
         Cell(PprMedian(row, "carve_seconds"), "{:.3f}"),
+        Cell(PprMedian(row, "ideal_iou"), "{:.3f}"),
+        Cell(PprMedian(row, "iou_with_ideal"), "{:.3f}"),
         row.runs.empty() || row.runs.back().ok ? "" : "  FAILED");
   }
 }

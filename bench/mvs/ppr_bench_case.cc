@@ -1,6 +1,8 @@
 #include "bench/mvs/ppr_bench_case.h"
 
 #include <chrono>
+#include <opencv2/imgcodecs.hpp>
+#include <stdexcept>
 
 #include "bench/mvs/plant_organs.h"
 #include "core/dataset/dataset_reader.h"
@@ -18,6 +20,21 @@ using Clock = std::chrono::steady_clock;
 
 double SecondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// The same views with masks from the scan's label images (stem, petioles, leaves), i.e. perfect
+// segmentation, undistorted like the images.
+std::vector<dataset::View> ViewsWithTrueMasks(const std::filesystem::path& scan) {
+  dataset::ViewSet set = dataset::ReadDataset(scan);
+  for (dataset::View& view : set.views) {
+    const auto labels_file =
+        scan / "labels" / (std::filesystem::path(view.name).stem().string() + ".png");
+    const cv::Mat labels = cv::imread(labels_file.string(), cv::IMREAD_UNCHANGED);
+    if (labels.empty()) throw std::runtime_error("cannot read " + labels_file.string());
+    view.mask = labels >= geometry::labels::kStem;
+    dataset::Undistort(view);
+  }
+  return std::move(set.views);
 }
 
 }  // namespace
@@ -53,6 +70,24 @@ nlohmann::json RunPprCase(const PprCase& ppr_case) {
     result["voxel_precision"] = overlap.Precision();
     result["voxel_recall"] = overlap.Recall();
     result["truth_voxels"] = overlap.truth;
+  }
+  if (std::filesystem::exists(ppr_case.dataset / "labels")) {
+    // The best any silhouette carving can do here: the same carving from perfect masks. Its IoU
+    // with the surface is the ceiling of the figure above; ours against it measures the masks.
+    ppr::PlantProxy ideal(box, options);
+    for (const dataset::View& view : ViewsWithTrueMasks(ppr_case.dataset)) ideal.AddView(view);
+    for (int i = 0; i < options.resolution_increases; ++i) ideal.IncreaseResolution();
+    const std::vector<Eigen::Vector3f> ideal_occupied = ideal.OccupiedCentres();
+    result["ideal_occupied"] = ideal_occupied.size();
+    result["iou_with_ideal"] =
+        eval::CompareVoxelSets(ideal_occupied, occupied, proxy.box().min(), proxy.voxel_size())
+            .Iou();
+    if (!set.ground_truth_mesh.empty()) {
+      const geometry::Mesh truth = PlantOrgans(geometry::ReadMesh(set.ground_truth_mesh));
+      result["ideal_iou"] =
+          eval::CompareWithSurface(truth, ideal_occupied, ideal.box().min(), ideal.voxel_size())
+              .Iou();
+    }
   }
   return result;
 }

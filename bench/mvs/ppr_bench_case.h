@@ -18,7 +18,9 @@ struct PprCase {
 
 // Figures: views, voxel_size_m, occupied, bounds_seconds (the automatic box's coarse pass),
 // carve_seconds (every view carved at the coarse level, then the resolution increase to the
-// final voxel size), iou, voxel_precision, voxel_recall, truth_voxels.
+// final voxel size), iou, voxel_precision, voxel_recall, truth_voxels; for a simulated scan
+// with label images also ideal_occupied, ideal_iou (the same carving from perfect masks against
+// the surface) and iou_with_ideal (our proxy against that one).
 nlohmann::json RunPprCase(const PprCase& ppr_case);
 
 }  // namespace avc::bench

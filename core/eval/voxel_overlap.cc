@@ -34,6 +34,40 @@ std::vector<uint64_t> SortedUnique(std::vector<uint64_t> codes) {
   return codes;
 }
 
+void CheckVoxelSize(double voxel_size) {
+  if (!(std::isfinite(voxel_size) && voxel_size > 0)) {
+    throw std::invalid_argument(
+        fmt::format("voxel overlap: voxel size {} must be positive", voxel_size));
+  }
+}
+
+std::vector<uint64_t> CentreCodes(const std::vector<Eigen::Vector3f>& centres,
+                                  const Eigen::Vector3d& origin, double voxel_size) {
+  std::vector<uint64_t> codes;
+  codes.reserve(centres.size());
+  for (size_t i = 0; i < centres.size(); ++i) {
+    const Eigen::Vector3d cell = (centres[i].cast<double>() - origin) / voxel_size;
+    const Eigen::Vector3d rounded = (cell.array() - 0.5).round();
+    if (!cell.allFinite() || ((cell.array() - 0.5) - rounded.array()).abs().maxCoeff() > 0.1) {
+      throw std::invalid_argument(
+          fmt::format("voxel overlap: centre {} is not a voxel centre of the grid", i));
+    }
+    codes.push_back(Code(rounded.cast<int64_t>()));
+  }
+  return SortedUnique(std::move(codes));
+}
+
+VoxelOverlap Overlap(const std::vector<uint64_t>& truth, const std::vector<uint64_t>& proxy) {
+  VoxelOverlap overlap;
+  overlap.truth = truth.size();
+  overlap.proxy = proxy.size();
+  std::vector<uint64_t> common;
+  std::set_intersection(truth.begin(), truth.end(), proxy.begin(), proxy.end(),
+                        std::back_inserter(common));
+  overlap.both = common.size();
+  return overlap;
+}
+
 }  // namespace
 
 double VoxelOverlap::Iou() const {
@@ -49,26 +83,19 @@ double VoxelOverlap::Recall() const {
   return truth == 0 ? 0.0 : static_cast<double>(both) / static_cast<double>(truth);
 }
 
+VoxelOverlap CompareVoxelSets(const std::vector<Eigen::Vector3f>& truth_centres,
+                              const std::vector<Eigen::Vector3f>& occupied_centres,
+                              const Eigen::Vector3d& origin, double voxel_size) {
+  CheckVoxelSize(voxel_size);
+  return Overlap(CentreCodes(truth_centres, origin, voxel_size),
+                 CentreCodes(occupied_centres, origin, voxel_size));
+}
+
 VoxelOverlap CompareWithSurface(const geometry::Mesh& truth,
                                 const std::vector<Eigen::Vector3f>& occupied_centres,
                                 const Eigen::Vector3d& origin, double voxel_size, uint64_t seed) {
-  if (!(std::isfinite(voxel_size) && voxel_size > 0)) {
-    throw std::invalid_argument(
-        fmt::format("CompareWithSurface: voxel size {} must be positive", voxel_size));
-  }
-  std::vector<uint64_t> proxy;
-  proxy.reserve(occupied_centres.size());
-  for (size_t i = 0; i < occupied_centres.size(); ++i) {
-    const Eigen::Vector3d cell = (occupied_centres[i].cast<double>() - origin) / voxel_size;
-    const Eigen::Vector3d rounded = (cell.array() - 0.5).round();
-    if (!cell.allFinite() || ((cell.array() - 0.5) - rounded.array()).abs().maxCoeff() > 0.1) {
-      throw std::invalid_argument(fmt::format(
-          "CompareWithSurface: occupied centre {} is not a voxel centre of the grid", i));
-    }
-    proxy.push_back(Code(rounded.cast<int64_t>()));
-  }
-  proxy = SortedUnique(std::move(proxy));
-
+  CheckVoxelSize(voxel_size);
+  const std::vector<uint64_t> proxy = CentreCodes(occupied_centres, origin, voxel_size);
   const double density = 16.0 / (voxel_size * voxel_size);
   const SurfaceSamples samples = SampleSurface(truth, density, seed, 50'000'000);
   std::vector<uint64_t> surface;
@@ -76,16 +103,7 @@ VoxelOverlap CompareWithSurface(const geometry::Mesh& truth,
   for (const Eigen::Vector3d& point : samples.points) {
     surface.push_back(Code(((point - origin) / voxel_size).array().floor().cast<int64_t>()));
   }
-  surface = SortedUnique(std::move(surface));
-
-  VoxelOverlap overlap;
-  overlap.truth = surface.size();
-  overlap.proxy = proxy.size();
-  std::vector<uint64_t> common;
-  std::set_intersection(surface.begin(), surface.end(), proxy.begin(), proxy.end(),
-                        std::back_inserter(common));
-  overlap.both = common.size();
-  return overlap;
+  return Overlap(SortedUnique(std::move(surface)), proxy);
 }
 
 }  // namespace avc::eval

@@ -26,6 +26,11 @@ struct VoxelOverlap {
 // voxelised from area-uniform samples, 16 per voxel face area (at most a sliver of a voxel the
 // surface merely grazes is missed). Throws std::invalid_argument for a non-positive voxel size
 // or a centre off the grid by more than a tenth of a voxel.
+// Two sets of voxel centres on one grid (as above): `truth` plays the ground truth.
+VoxelOverlap CompareVoxelSets(const std::vector<Eigen::Vector3f>& truth_centres,
+                              const std::vector<Eigen::Vector3f>& occupied_centres,
+                              const Eigen::Vector3d& origin, double voxel_size);
+
 VoxelOverlap CompareWithSurface(const geometry::Mesh& truth,
                                 const std::vector<Eigen::Vector3f>& occupied_centres,
                                 const Eigen::Vector3d& origin, double voxel_size,

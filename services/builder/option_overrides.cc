@@ -15,6 +15,16 @@ namespace {
 using Setter = std::function<void(ReconstructOptions*, const std::string&)>;
 
 template <typename T>
+T Parse(const std::string& text);
+
+template <>
+bool Parse<bool>(const std::string& text) {
+  if (text == "true" || text == "1") return true;
+  if (text == "false" || text == "0") return false;
+  throw std::invalid_argument("not true, false, 1 or 0");
+}
+
+template <typename T>
 T Parse(const std::string& text) {
   T value{};
   const char* end = text.data() + text.size();
@@ -56,6 +66,7 @@ const std::map<std::string, Setter>& Setters() {
       {"patch.regularity_threshold", Field(&O::patch, &P::regularity_threshold)},
       {"patch.min_group_size", Field(&O::patch, &P::min_group_size)},
       {"patch.bounds_dilation", Field(&O::patch, &P::bounds_dilation)},
+      {"patch.whole_patch_in_mask", Field(&O::patch, &P::whole_patch_in_mask)},
       {"sweep.level", Field(&O::sweep, &S::level)},
       {"sweep.window", Field(&O::sweep, &S::window)},
       {"sweep.neighbours", Field(&O::sweep, &S::neighbours)},

@@ -49,6 +49,17 @@ TEST(VoxelOverlap, AShiftedGridSeesTheSheetInOtherVoxels) {
   EXPECT_EQ(overlap.Iou(), 0.0);
 }
 
+TEST(VoxelOverlap, ComparesTwoSetsOfCentres) {
+  const std::vector<Eigen::Vector3f> truth = {Centre(0, 0, 0), Centre(1, 0, 0), Centre(2, 0, 0)};
+  const std::vector<Eigen::Vector3f> proxy = {Centre(1, 0, 0), Centre(2, 0, 0), Centre(2, 0, 0),
+                                              Centre(3, 0, 0)};
+  const VoxelOverlap overlap = CompareVoxelSets(truth, proxy, Eigen::Vector3d::Zero(), kVoxel);
+  EXPECT_EQ(overlap.truth, 3u);
+  EXPECT_EQ(overlap.proxy, 3u);  // a repeated centre counts once
+  EXPECT_EQ(overlap.both, 2u);
+  EXPECT_NEAR(overlap.Iou(), 0.5, 1e-12);
+}
+
 TEST(VoxelOverlap, RefusesCentresOffTheGridAndBadSizes) {
   EXPECT_THROW(CompareWithSurface(Sheet(), {Eigen::Vector3f(0.001f, 0.005f, 0.005f)},
                                   Eigen::Vector3d::Zero(), kVoxel),
