@@ -15,16 +15,6 @@ namespace {
 using Setter = std::function<void(ReconstructOptions*, const std::string&)>;
 
 template <typename T>
-T Parse(const std::string& text);
-
-template <>
-bool Parse<bool>(const std::string& text) {
-  if (text == "true" || text == "1") return true;
-  if (text == "false" || text == "0") return false;
-  throw std::invalid_argument("not true, false, 1 or 0");
-}
-
-template <typename T>
 T Parse(const std::string& text) {
   T value{};
   const char* end = text.data() + text.size();

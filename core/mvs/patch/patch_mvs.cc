@@ -59,9 +59,14 @@ void ValidateViews(const std::vector<dataset::View>& views) {
   }
 }
 
-int AutomaticLevel(const std::vector<dataset::View>& views) {
+int LongestSide(const std::vector<dataset::View>& views) {
   int longest = 0;
   for (const auto& v : views) longest = std::max({longest, v.image.cols, v.image.rows});
+  return longest;
+}
+
+int AutomaticLevel(const std::vector<dataset::View>& views) {
+  const int longest = LongestSide(views);
   int level = 0;
   while ((longest >> level) > 1600) ++level;
   return level;
@@ -160,11 +165,13 @@ void PatchMvsOptions::Validate() const {
           "must be positive");
   require(min_group_size >= 1, "min_group_size", "must be at least 1");
   require(bounds_dilation >= 0, "bounds_dilation", "must not be negative");
+  require(whole_patch_in_mask >= -1 && whole_patch_in_mask <= 1, "whole_patch_in_mask",
+          "must be -1 (automatic), 0 or 1");
 }
 
 MvsPoints RunPatchMvs(const std::vector<dataset::View>& views, const MvsBounds& bounds,
-                      const PatchMvsOptions& options, const MvsProgress& progress) {
-  options.Validate();
+                      const PatchMvsOptions& requested, const MvsProgress& progress) {
+  requested.Validate();
   ValidateViews(views);
   Require(bounds.empty() || (std::isfinite(bounds.voxel_size) && bounds.voxel_size > 0),
           "RunPatchMvs: bounds.voxel_size must be positive when bounds has voxels");
@@ -172,7 +179,13 @@ MvsPoints RunPatchMvs(const std::vector<dataset::View>& views, const MvsBounds& 
     Require(bounds.occupied_centres[i].allFinite(),
             fmt::format("RunPatchMvs: bounds.occupied_centres[{}] is not finite", i));
   }
+  // The automatic choices made for these views.
+  PatchMvsOptions options = requested;
   const int level = options.level < 0 ? AutomaticLevel(views) : options.level;
+  options.level = level;
+  if (options.whole_patch_in_mask < 0) {
+    options.whole_patch_in_mask = (LongestSide(views) >> level) >= 1000 ? 1 : 0;
+  }
   const std::vector<PatchImage> images = PrepareImages(views, level, bounds);
   const OccupancyLookup lookup(bounds);
 

@@ -105,7 +105,7 @@ bool PatchRefiner::SampleNormalised(const Frame& frame, uint32_t image_index, fl
       o += 3;
     }
   }
-  if (options_.whole_patch_in_mask) {
+  if (options_.whole_patch_in_mask > 0) {
     // The corners too: a patch straddling the silhouette matches its (view-dependent) edge.
     for (int b : {-half, half}) {
       for (int a : {-half, half}) {

@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
   if (const char* e = std::getenv("PATCH_REFINE")) options.max_refine_images = std::atoi(e);
   if (const char* e = std::getenv("PATCH_CELL")) options.cell_size = std::atoi(e);
   if (const char* e = std::getenv("PATCH_ROUNDS")) options.rounds = std::atoi(e);
-  if (const char* e = std::getenv("PATCH_WHOLE")) options.whole_patch_in_mask = std::atoi(e) != 0;
+  if (const char* e = std::getenv("PATCH_WHOLE")) options.whole_patch_in_mask = std::atoi(e);
   if (const char* e = std::getenv("PATCH_WINDOW")) options.window = std::atoi(e);
   if (mode == "dino" && argc >= 3) {
     if (argc >= 4) options.level = std::atoi(argv[3]);
