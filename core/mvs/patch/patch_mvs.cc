@@ -146,7 +146,7 @@ void PatchMvsOptions::Validate() const {
   require(std::isfinite(ncc_threshold_before) && ncc_threshold_before > -1 &&
               ncc_threshold_before <= ncc_threshold,
           "ncc_threshold_before", "must be in (-1, ncc_threshold]");
-  require(min_images >= 2, "min_images", "must be at least 2");
+  require(min_images == 0 || min_images >= 2, "min_images", "must be 0 (automatic) or at least 2");
   require(std::isfinite(max_view_angle) && max_view_angle > 0 && max_view_angle < M_PI / 2,
           "max_view_angle", "must be in (0, pi/2)");
   require(features_per_block >= 1, "features_per_block", "must be at least 1");
@@ -183,6 +183,7 @@ MvsPoints RunPatchMvs(const std::vector<dataset::View>& views, const MvsBounds& 
   PatchMvsOptions options = requested;
   const int level = options.level < 0 ? AutomaticLevel(views) : options.level;
   options.level = level;
+  if (options.min_images == 0) options.min_images = views.size() >= 24 ? 4 : 3;
   if (options.whole_patch_in_mask < 0) {
     options.whole_patch_in_mask = (LongestSide(views) >> level) >= 1000 ? 1 : 0;
   }
