@@ -23,7 +23,7 @@ PatchImage::PatchImage(const camera::Camera& camera, const cv::Mat& bgr, cv::Mat
   rgb_.resize(static_cast<size_t>(width_) * height_ * 3);
   for (int y = 0; y < height_; ++y) {
     const uint8_t* row = bgr.ptr<uint8_t>(y);
-    float* out = rgb_.data() + static_cast<size_t>(y) * width_ * 3;
+    uint8_t* out = rgb_.data() + static_cast<size_t>(y) * width_ * 3;
     for (int x = 0; x < width_; ++x) {
       out[3 * x + 0] = row[3 * x + 2];
       out[3 * x + 1] = row[3 * x + 1];

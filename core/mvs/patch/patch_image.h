@@ -51,11 +51,12 @@ class PatchImage {
     if (y > height_ - 2) y = height_ - 2;
     const float fx = u - x;
     const float fy = v - y;
-    const float* p00 = rgb_.data() + (static_cast<size_t>(y) * width_ + x) * 3;
-    const float* p10 = p00 + static_cast<size_t>(width_) * 3;
+    const uint8_t* p00 = rgb_.data() + (static_cast<size_t>(y) * width_ + x) * 3;
+    const uint8_t* p10 = p00 + static_cast<size_t>(width_) * 3;
     const float w00 = (1 - fx) * (1 - fy), w01 = fx * (1 - fy), w10 = (1 - fx) * fy, w11 = fx * fy;
     for (int c = 0; c < 3; ++c) {
-      rgb[c] = w00 * p00[c] + w01 * p00[c + 3] + w10 * p10[c] + w11 * p10[c + 3];
+      rgb[c] = w00 * static_cast<float>(p00[c]) + w01 * static_cast<float>(p00[c + 3]) +
+               w10 * static_cast<float>(p10[c]) + w11 * static_cast<float>(p10[c + 3]);
     }
   }
 
@@ -66,7 +67,9 @@ class PatchImage {
   Eigen::Vector3d p4_;  // K t
   Eigen::Vector3d m_row3_;
   Eigen::Vector3d centre_;
-  std::vector<float> rgb_;  // interleaved R G B, row-major
+  // Interleaved R G B, row-major, as bytes: a quarter of the memory traffic of floats, and the
+  // same samples (bytes are exact in float).
+  std::vector<uint8_t> rgb_;
   cv::Mat usable_, near_, far_;
 };
 

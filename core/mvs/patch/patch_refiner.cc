@@ -121,9 +121,11 @@ bool PatchRefiner::SampleNormalised(const Frame& frame, uint32_t image_index, fl
   const float pixels = static_cast<float>(n / 3);
   const float mean[3] = {sum[0] / pixels, sum[1] / pixels, sum[2] / pixels};
   double squares = 0;
-  for (int i = 0; i < n; ++i) {
-    out[i] -= mean[i % 3];
-    squares += static_cast<double>(out[i]) * out[i];
+  for (int i = 0; i < n; i += 3) {
+    for (int c = 0; c < 3; ++c) {
+      out[i + c] -= mean[c];
+      squares += static_cast<double>(out[i + c]) * out[i + c];
+    }
   }
   if (squares <= 1e-12 || std::sqrt(squares / n) < min_deviation) return false;
   const float scale = static_cast<float>(1.0 / std::sqrt(squares));
@@ -186,7 +188,7 @@ bool PatchRefiner::Refine(Patch* patch) const {
   };
   double best_cost = 0;
   const NmPoint<3> best =
-      NelderMead<3>(cost, {0, 0, 0}, {1.0, 0.15, 0.15}, options_.max_iterations, 1e-4, &best_cost);
+      NelderMead<3>(cost, {0, 0, 0}, {1.0, 0.15, 0.15}, options_.max_iterations, 1e-3, &best_cost);
   if (best_cost >= 2.0) return false;
   geometry(best, &patch->centre, &patch->normal);
   if (!lookup_.Contains(patch->centre, options_.bounds_dilation)) return false;
