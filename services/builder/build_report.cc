@@ -32,6 +32,9 @@ BuildReport MakeBuildReport(const Reconstruction& reconstruction, MvsMethod meth
   report.points = reconstruction.points.size();
   report.points_per_image =
       report.images == 0 ? 0 : static_cast<double>(report.points) / report.images;
+  report.merged_points = reconstruction.merged.size();
+  report.outliers_outside_proxy = reconstruction.merged.outside_proxy;
+  report.outliers_in_sparse_voxels = reconstruction.merged.in_sparse_voxels;
   report.voxel_size = reconstruction.proxy.voxel_size();
   report.voxels = reconstruction.proxy.Counts();
   report.timings = reconstruction.timings;
@@ -53,15 +56,20 @@ BuildReport MakeBuildReport(const Reconstruction& reconstruction, MvsMethod meth
 }
 
 nlohmann::ordered_json BuildReportToJson(const BuildReport& report) {
-  nlohmann::ordered_json json = {{"method", report.method},
-                                 {"images", report.images},
-                                 {"points", report.points},
-                                 {"points_per_image", report.points_per_image},
-                                 {"proxy",
-                                  {{"voxel_size_m", report.voxel_size},
-                                   {"occupied", report.voxels.occupied},
-                                   {"free", report.voxels.free},
-                                   {"unknown", report.voxels.unknown}}}};
+  nlohmann::ordered_json json = {
+      {"method", report.method},
+      {"images", report.images},
+      {"points", report.points},
+      {"points_per_image", report.points_per_image},
+      {"merged",
+       {{"points", report.merged_points},
+        {"outliers_outside_proxy", report.outliers_outside_proxy},
+        {"outliers_in_sparse_voxels", report.outliers_in_sparse_voxels}}},
+      {"proxy",
+       {{"voxel_size_m", report.voxel_size},
+        {"occupied", report.voxels.occupied},
+        {"free", report.voxels.free},
+        {"unknown", report.voxels.unknown}}}};
   if (report.accuracy) {
     const eval::EvalResult& a = *report.accuracy;
     nlohmann::ordered_json scores = nlohmann::ordered_json::array();
@@ -95,6 +103,11 @@ std::string BuildReportToText(const BuildReport& report) {
       "{} images, {} points ({:.0f} per image, {}); proxy {:.2f} mm voxels, {} occupied\n",
       report.images, report.points, report.points_per_image, report.method, report.voxel_size * 1e3,
       report.voxels.occupied);
+  if (report.points > 0) {
+    text += fmt::format(
+        "merged into the proxy: {} points ({} outside it, {} in voxels with too few)\n",
+        report.merged_points, report.outliers_outside_proxy, report.outliers_in_sparse_voxels);
+  }
   if (report.accuracy) {
     const eval::EvalResult& a = *report.accuracy;
     text += fmt::format("against the ground truth: mean distance {:.3f} mm (RMS {:.3f} mm)",

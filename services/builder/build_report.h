@@ -19,6 +19,11 @@ struct BuildReport {
   size_t images = 0;
   size_t points = 0;
   double points_per_image = 0;
+  // Merging into the proxy's voxels: points kept, and MVS points dropped as outliers (outside
+  // the occupied voxels, or in voxels holding too few points).
+  size_t merged_points = 0;
+  uint64_t outliers_outside_proxy = 0;
+  uint64_t outliers_in_sparse_voxels = 0;
   double voxel_size = 0;
   ppr::VoxelCounts voxels;
   std::vector<StageTime> timings;

@@ -100,7 +100,11 @@ Reconstruction Reconstruct(dataset::ViewSet& set, const ReconstructOptions& opti
     points = mvs::RunPlaneSweep(set.views, proxy.ToMvsBounds(), options.sweep, mvs_progress);
   }
   clock.Finish("mvs");
-  return {std::move(proxy), std::move(points), std::move(masks), std::move(timings)};
+  merge::MergedPoints merged;
+  if (points.size() > 0) merged = merge::MergeIntoProxy(points, proxy.ToMvsBounds());
+  clock.Finish("merge");
+  return {std::move(proxy), std::move(points), std::move(merged), std::move(masks),
+          std::move(timings)};
 }
 
 }  // namespace avc::builder

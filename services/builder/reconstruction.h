@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/dataset/view.h"
+#include "core/merge/merge_points.h"
 #include "core/mvs/mvs_points.h"
 #include "core/mvs/patch/patch_mvs.h"
 #include "core/mvs/plane_sweep/plane_sweep_mvs.h"
@@ -34,13 +35,15 @@ struct ReconstructOptions {
 };
 
 struct StageTime {
-  std::string stage;  // "undistort", "masks", "proxy", "mvs"
+  std::string stage;  // "undistort", "masks", "proxy", "mvs", "merge"
   double seconds = 0;
 };
 
 struct Reconstruction {
   ppr::PlantProxy proxy;
   mvs::MvsPoints points;  // empty when the method is kNone
+  // The points merged into the proxy's voxels (paper §3.1): one per voxel holding more than 3.
+  merge::MergedPoints merged;
   segmentation::MaskSummary masks;
   std::vector<StageTime> timings;  // wall clock, for reports only (never in the products)
 };

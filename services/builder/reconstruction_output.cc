@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "core/camera/camera_io.h"
+#include "core/geometry/point_cloud_io.h"
 #include "core/mvs/mvs_points_io.h"
 
 namespace avc::builder {
@@ -45,6 +46,10 @@ std::vector<std::string> WriteReconstruction(const fs::path& dir, const dataset:
   if (reconstruction.points.size() > 0) {
     mvs::WriteMvsPointsPly(dir / "points.ply", reconstruction.points);
     written.push_back("points.ply");
+  }
+  if (reconstruction.merged.size() > 0) {
+    geometry::WritePointCloudPly(dir / "merged.ply", reconstruction.merged.cloud);
+    written.push_back("merged.ply");
   }
   std::vector<camera::NamedCamera> cameras;
   for (const dataset::View& view : set.views) {

@@ -48,8 +48,22 @@ TEST(Reconstruct, BuildsProxyAndPointsThatMatchTheGroundTruth) {
   EXPECT_GT(result.proxy.Counts().occupied, 1000u);
   ASSERT_GT(result.points.size(), 2000u);
   EXPECT_TRUE(result.points.Validate().empty());
-  ASSERT_EQ(result.timings.size(), 4u);
-  EXPECT_EQ(result.timings.back().stage, "mvs");
+  ASSERT_EQ(result.timings.size(), 5u);
+  EXPECT_EQ(result.timings[3].stage, "mvs");
+  EXPECT_EQ(result.timings.back().stage, "merge");
+  // Merging: every MVS point is merged or counted as an outlier; a voxel keeps 4 or more. At
+  // this size one patch covers about 3 mm, more than a 2.3 mm voxel, so few voxels hold 4
+  // (measured: 5); at the cell's 1280x960, 80k points of the broadleaf merge into 9,153.
+  ASSERT_GT(result.merged.size(), 0u);
+  EXPECT_LT(result.merged.size(), result.points.size() / 4);
+  uint64_t merged_from = 0;
+  for (uint32_t count : result.merged.point_counts) {
+    EXPECT_GE(count, 4u);
+    merged_from += count;
+  }
+  EXPECT_EQ(merged_from + result.merged.outside_proxy + result.merged.in_sparse_voxels,
+            result.points.size());
+  EXPECT_EQ(result.merged.voxel_size, result.proxy.voxel_size());
 
   const BuildReport report = MakeBuildReport(result, MvsMethod::kPatch, set.ground_truth_mesh);
   ASSERT_TRUE(report.accuracy.has_value());
@@ -62,6 +76,7 @@ TEST(Reconstruct, BuildsProxyAndPointsThatMatchTheGroundTruth) {
   EXPECT_LT(report.accuracy->accuracy.median, 0.0025);
   const nlohmann::json json = BuildReportToJson(report);
   EXPECT_EQ(json["points"], result.points.size());
+  EXPECT_EQ(json["merged"]["points"], result.merged.size());
   EXPECT_EQ(json["masks"].size(), 12u);
   EXPECT_TRUE(json.contains("ground_truth"));
   EXPECT_NE(BuildReportToText(report).find("per image"), std::string::npos);
