@@ -27,6 +27,13 @@ bool CellGrids::CellOf(size_t image, double u, double v, int* cx, int* cy) const
   return true;
 }
 
+bool CellGrids::CellOfPoint(size_t image, const PatchImage& view, const Eigen::Vector3d& point,
+                            int* cx, int* cy, double* depth) const {
+  const Eigen::Vector3d h = view.ProjectH(point);
+  if (depth != nullptr) *depth = h.z();
+  return CellOf(image, h.x() / h.z(), h.y() / h.z(), cx, cy);
+}
+
 void CellGrids::Add(uint32_t id, const Patch& patch, const std::vector<PatchImage>& images) {
   for (uint32_t j : patch.visible) {
     const Eigen::Vector3d h = images[j].ProjectH(patch.centre);

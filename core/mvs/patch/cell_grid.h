@@ -22,6 +22,15 @@ class CellGrids {
   int rows(size_t image) const { return grids_[image].rows; }
   // The cell of pixel (u, v) in image; false when outside the grid.
   bool CellOf(size_t image, double u, double v, int* cx, int* cy) const;
+  // The cell world point `point` projects to in `view` (image `image`), and its depth there.
+  // The point must lie in front of the camera.
+  bool CellOfPoint(size_t image, const PatchImage& view, const Eigen::Vector3d& point, int* cx,
+                   int* cy, double* depth = nullptr) const;
+  // How far (metres, along the ray) a patch at `depth` may lie behind another before it counts
+  // as hidden: `cells` cell footprints at that depth.
+  double OcclusionTolerance(double cells, double depth, double fx) const {
+    return cells * cell_size_ * depth / fx;
+  }
 
   // Registers patch `id` in the cell of its centre in every image of its V*.
   void Add(uint32_t id, const Patch& patch, const std::vector<PatchImage>& images);

@@ -57,9 +57,8 @@ std::vector<Candidate> CandidatesFrom(const Patch& source, const std::vector<Pat
       c.ok = refiner.Refine(&c.patch) &&
              std::binary_search(c.patch.visible.begin(), c.patch.visible.end(), j);
       if (c.ok) {
-        const Eigen::Vector3d hj = image.ProjectH(c.patch.centre);
         int jx = 0, jy = 0;
-        c.ok = grids.CellOf(j, hj.x() / hj.z(), hj.y() / hj.z(), &jx, &jy) && jx == nx && jy == ny;
+        c.ok = grids.CellOfPoint(j, image, c.patch.centre, &jx, &jy) && jx == nx && jy == ny;
       }
       if (!c.ok) {
         c.patch = Patch{};
@@ -68,9 +67,8 @@ std::vector<Candidate> CandidatesFrom(const Patch& source, const std::vector<Pat
       }
       // Cells the new patch covers need no second candidate from this source.
       for (uint32_t k : c.patch.visible) {
-        const Eigen::Vector3d hk = images[k].ProjectH(c.patch.centre);
         int kx = 0, ky = 0;
-        if (grids.CellOf(k, hk.x() / hk.z(), hk.y() / hk.z(), &kx, &ky)) {
+        if (grids.CellOfPoint(k, images[k], c.patch.centre, &kx, &ky)) {
           tried.emplace_back(k, kx, ky);
         }
       }

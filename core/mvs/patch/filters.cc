@@ -44,13 +44,14 @@ size_t FilterOutside(const std::vector<PatchImage>& images, const PatchMvsOption
     const double rho = options.cell_size * Footprint(p, images);
     double behind = 0;
     for (uint32_t j : p.visible) {
-      const Eigen::Vector3d h = images[j].ProjectH(p.centre);
       int cx = 0, cy = 0;
-      if (!grids->CellOf(j, h.x() / h.z(), h.y() / h.z(), &cx, &cy)) continue;
-      const double tolerance = options.occlusion_cells * options.cell_size * h.z() / images[j].fx();
+      double depth = 0;
+      if (!grids->CellOfPoint(j, images[j], p.centre, &cx, &cy, &depth)) continue;
+      const double tolerance =
+          grids->OcclusionTolerance(options.occlusion_cells, depth, images[j].fx());
       for (uint32_t q : grids->Patches(j, cx, cy)) {
         const Patch& other = set->patches[q];
-        if (q == id || images[j].Depth(other.centre) <= h.z() + tolerance) continue;
+        if (q == id || images[j].Depth(other.centre) <= depth + tolerance) continue;
         if (!AreNeighbours(p, other, rho)) behind += Support(other);
       }
     }
@@ -68,15 +69,15 @@ size_t FilterExact(const std::vector<PatchImage>& images, const PatchMvsOptions&
     const Patch& p = set->patches[ids[k]];
     const double rho = options.cell_size * Footprint(p, images);
     for (uint32_t j : p.visible) {
-      const Eigen::Vector3d h = images[j].ProjectH(p.centre);
       int cx = 0, cy = 0;
+      double depth = 0;
       bool hidden = false;
-      if (grids->CellOf(j, h.x() / h.z(), h.y() / h.z(), &cx, &cy)) {
+      if (grids->CellOfPoint(j, images[j], p.centre, &cx, &cy, &depth)) {
         const double tolerance =
-            options.occlusion_cells * options.cell_size * h.z() / images[j].fx();
+            grids->OcclusionTolerance(options.occlusion_cells, depth, images[j].fx());
         for (uint32_t q : grids->Patches(j, cx, cy)) {
           const Patch& other = set->patches[q];
-          if (q != ids[k] && images[j].Depth(other.centre) < h.z() - tolerance &&
+          if (q != ids[k] && images[j].Depth(other.centre) < depth - tolerance &&
               !AreNeighbours(p, other, rho)) {
             hidden = true;
             break;
@@ -108,9 +109,8 @@ size_t FilterRegularity(const std::vector<PatchImage>& images, const PatchMvsOpt
   const size_t removed = RemoveWhere(set, [&](uint32_t id) {
     const Patch& p = set->patches[id];
     const uint32_t r = p.reference;
-    const Eigen::Vector3d h = images[r].ProjectH(p.centre);
     int cx = 0, cy = 0;
-    if (!grids->CellOf(r, h.x() / h.z(), h.y() / h.z(), &cx, &cy)) return false;
+    if (!grids->CellOfPoint(r, images[r], p.centre, &cx, &cy)) return false;
     const double footprint = Footprint(p, images);
     const double reach = 2.0 * (kRadius + 1) * options.cell_size * footprint;
     std::vector<Eigen::Vector3d> near;
@@ -147,9 +147,8 @@ size_t FilterSmallGroups(const std::vector<PatchImage>& images, const PatchMvsOp
     const Patch& p = set->patches[ids[k]];
     const double rho = options.cell_size * Footprint(p, images);
     for (uint32_t j : p.visible) {
-      const Eigen::Vector3d h = images[j].ProjectH(p.centre);
       int cx = 0, cy = 0;
-      if (!grids->CellOf(j, h.x() / h.z(), h.y() / h.z(), &cx, &cy)) continue;
+      if (!grids->CellOfPoint(j, images[j], p.centre, &cx, &cy)) continue;
       for (int y = std::max(0, cy - 1); y <= std::min(grids->rows(j) - 1, cy + 1); ++y) {
         for (int x = std::max(0, cx - 1); x <= std::min(grids->cols(j) - 1, cx + 1); ++x) {
           for (uint32_t q : grids->Patches(j, x, y)) {

@@ -229,9 +229,8 @@ MvsPoints RunPatchMvs(const std::vector<dataset::View>& views, const MvsBounds& 
     });
     for (auto& candidate : found) {
       if (!candidate) continue;
-      const Eigen::Vector3d h = images[i].ProjectH(candidate->centre);
       int cx = 0, cy = 0;
-      if (grids.CellOf(i, h.x() / h.z(), h.y() / h.z(), &cx, &cy) && !grids.Empty(i, cx, cy)) {
+      if (grids.CellOfPoint(i, images[i], candidate->centre, &cx, &cy) && !grids.Empty(i, cx, cy)) {
         continue;
       }
       const uint32_t id = set.Add(std::move(*candidate));

@@ -53,7 +53,8 @@ std::vector<uint32_t> PatchRefiner::VisibleImages(const Patch& patch) const {
     if (to_camera.dot(patch.normal) < cos_max_angle_) continue;
     int cx = 0, cy = 0;
     if (grids_.CellOf(j, u, v, &cx, &cy)) {
-      const double tolerance = options_.occlusion_cells * grids_.cell_size() * h.z() / image.fx();
+      const double tolerance =
+          grids_.OcclusionTolerance(options_.occlusion_cells, h.z(), image.fx());
       if (grids_.NearestDepth(j, cx, cy) < h.z() - tolerance) continue;
     }
     visible.push_back(j);
