@@ -9,23 +9,17 @@
 #include "core/dataset/dataset_reader.h"
 #include "core/ppr/plant_proxy.h"
 #include "core/ppr/proxy_bounds.h"
+#include "core/segmentation/threshold_silhouette.h"
+#include "tests/support/test_support.h"
 
 namespace avc::ppr {
 namespace {
 
-const std::filesystem::path kDino = "/work/shared/data/middlebury/dinoSparseRing";
+const std::filesystem::path kDino = avc::testing::SharedDataDir() / "middlebury" / "dinoSparseRing";
 
 // The README's silhouette recipe: grey threshold 0.19, dilate 10 px, erode 7 px (discs).
 cv::Mat DinoMask(const cv::Mat& image) {
-  cv::Mat grey, mask;
-  cv::cvtColor(image, grey, cv::COLOR_BGR2GRAY);
-  cv::threshold(grey, mask, 0.19 * 255, 255, cv::THRESH_BINARY);
-  const auto disc = [](int radius) {
-    return cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * radius + 1, 2 * radius + 1));
-  };
-  cv::dilate(mask, mask, disc(10));
-  cv::erode(mask, mask, disc(7));
-  return mask;
+  return segmentation::ThresholdSilhouette(image, 0.19, 10, 7);
 }
 
 TEST(PlantProxyDino, CarvedVoxelsFillTheTightBoundingBox) {

@@ -9,17 +9,13 @@
 #include "core/dataset/dataset_reader.h"
 #include "core/dataset/view_transforms.h"
 #include "core/geometry/mesh_io.h"
+#include "core/segmentation/threshold_silhouette.h"
 #include "sim/dataset/render_dataset.h"
 
 namespace avc::mvs::testing {
 
 cv::Mat DinoSilhouette(const cv::Mat& bgr) {
-  cv::Mat grey, mask;
-  cv::cvtColor(bgr, grey, cv::COLOR_BGR2GRAY);
-  cv::threshold(grey, mask, 0.19 * 255, 255, cv::THRESH_BINARY);
-  cv::dilate(mask, mask, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(21, 21)));
-  cv::erode(mask, mask, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(15, 15)));
-  return mask;
+  return segmentation::ThresholdSilhouette(bgr, 0.19, 10, 7);
 }
 
 MvsBounds VisualHull(const std::vector<dataset::View>& views, const Eigen::Vector3d& lo,

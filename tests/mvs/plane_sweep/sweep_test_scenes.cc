@@ -6,6 +6,8 @@
 #include <opencv2/imgproc.hpp>
 #include <random>
 
+#include "core/segmentation/threshold_silhouette.h"
+
 namespace avc::mvs::sweep_test {
 namespace {
 
@@ -144,15 +146,7 @@ MvsBounds VisualHull(const std::vector<dataset::View>& views, const Eigen::Vecto
 }
 
 cv::Mat MiddleburySilhouette(const cv::Mat& bgr) {
-  cv::Mat grey, silhouette;
-  cv::cvtColor(bgr, grey, cv::COLOR_BGR2GRAY);
-  cv::threshold(grey, silhouette, 0.19 * 255, 255, cv::THRESH_BINARY);
-  const auto disc = [](int radius) {
-    return cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * radius + 1, 2 * radius + 1));
-  };
-  cv::dilate(silhouette, silhouette, disc(10));
-  cv::erode(silhouette, silhouette, disc(7));
-  return silhouette;
+  return segmentation::ThresholdSilhouette(bgr, 0.19, 10, 7);
 }
 
 double InsideSilhouetteFraction(const MvsPoints& points, const std::vector<dataset::View>& views,
