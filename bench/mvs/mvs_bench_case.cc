@@ -3,9 +3,9 @@
 #include <chrono>
 
 #include "bench/mvs/plant_organs.h"
-#include "bench/mvs/silhouette_agreement.h"
 #include "core/dataset/dataset_reader.h"
 #include "core/eval/metrics.h"
+#include "core/eval/silhouette_agreement.h"
 #include "core/geometry/mesh_io.h"
 #include "core/segmentation/threshold_silhouette.h"
 
@@ -38,7 +38,7 @@ nlohmann::json RunMvsCase(const MvsCase& mvs_case) {
     for (const dataset::View& view : set.views) {
       silhouettes.push_back(segmentation::ThresholdSilhouette(view.image, 0.19, 10, 7));
     }
-    result["inside_fraction"] = InsideAllSilhouettesFraction(points, set.views, silhouettes);
+    result["inside_fraction"] = eval::InsideAllSilhouettesFraction(points, set.views, silhouettes);
   }
   if (!set.ground_truth_mesh.empty() && points.size() > 0) {
     const geometry::Mesh truth = PlantOrgans(geometry::ReadMesh(set.ground_truth_mesh));

@@ -8,6 +8,7 @@
 
 #include "core/dataset/dataset_reader.h"
 #include "core/dataset/view_transforms.h"
+#include "core/eval/silhouette_agreement.h"
 #include "core/geometry/mesh_io.h"
 #include "core/segmentation/threshold_silhouette.h"
 #include "sim/dataset/render_dataset.h"
@@ -45,27 +46,7 @@ MvsBounds VisualHull(const std::vector<dataset::View>& views, const Eigen::Vecto
 
 double InsideFraction(const MvsPoints& points, const std::vector<dataset::View>& views,
                       const std::vector<cv::Mat>& silhouettes) {
-  if (points.size() == 0) return 0;
-  size_t inside = 0;
-  for (size_t i = 0; i < points.size(); ++i) {
-    bool all = true;
-    for (uint32_t j : points.views[i]) {
-      const auto pixel = views[j].camera.Project(points.cloud.positions[i].cast<double>());
-      if (!pixel) {
-        all = false;
-        break;
-      }
-      const int u = static_cast<int>(std::lround(pixel->x()));
-      const int v = static_cast<int>(std::lround(pixel->y()));
-      if (u < 0 || v < 0 || u >= silhouettes[j].cols || v >= silhouettes[j].rows ||
-          silhouettes[j].at<uint8_t>(v, u) == 0) {
-        all = false;
-        break;
-      }
-    }
-    inside += all;
-  }
-  return static_cast<double>(inside) / points.size();
+  return eval::InsideAllSilhouettesFraction(points, views, silhouettes);
 }
 
 std::vector<dataset::View> TexturedPlaneViews(int count, int width, int height, double distance,

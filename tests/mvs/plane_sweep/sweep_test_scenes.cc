@@ -6,6 +6,7 @@
 #include <opencv2/imgproc.hpp>
 #include <random>
 
+#include "core/eval/silhouette_agreement.h"
 #include "core/segmentation/threshold_silhouette.h"
 
 namespace avc::mvs::sweep_test {
@@ -151,23 +152,7 @@ cv::Mat MiddleburySilhouette(const cv::Mat& bgr) {
 
 double InsideSilhouetteFraction(const MvsPoints& points, const std::vector<dataset::View>& views,
                                 const std::vector<cv::Mat>& silhouettes) {
-  if (points.size() == 0) return 0;
-  size_t inside = 0;
-  for (size_t i = 0; i < points.size(); ++i) {
-    bool all = true;
-    for (uint32_t v : points.views[i]) {
-      const auto pixel = views[v].camera.Project(points.cloud.positions[i].cast<double>());
-      const int x = pixel ? static_cast<int>(std::lround(pixel->x())) : -1;
-      const int y = pixel ? static_cast<int>(std::lround(pixel->y())) : -1;
-      if (x < 0 || y < 0 || x >= silhouettes[v].cols || y >= silhouettes[v].rows ||
-          silhouettes[v].at<uint8_t>(y, x) == 0) {
-        all = false;
-        break;
-      }
-    }
-    inside += all ? 1 : 0;
-  }
-  return static_cast<double>(inside) / static_cast<double>(points.size());
+  return eval::InsideAllSilhouettesFraction(points, views, silhouettes);
 }
 
 double InsideBoxFraction(const MvsPoints& points, const Eigen::Vector3d& min,

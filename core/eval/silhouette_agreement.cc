@@ -1,9 +1,9 @@
-#include "bench/mvs/silhouette_agreement.h"
+#include "core/eval/silhouette_agreement.h"
 
 #include <cmath>
 #include <stdexcept>
 
-namespace avc::bench {
+namespace avc::eval {
 
 double InsideAllSilhouettesFraction(const mvs::MvsPoints& points,
                                     const std::vector<dataset::View>& views,
@@ -32,4 +32,4 @@ double InsideAllSilhouettesFraction(const mvs::MvsPoints& points,
   return static_cast<double>(inside) / static_cast<double>(points.size());
 }
 
-}  // namespace avc::bench
+}  // namespace avc::eval

@@ -10,7 +10,7 @@
 #include "core/dataset/view.h"
 #include "core/mvs/mvs_points.h"
 
-namespace avc::bench {
+namespace avc::eval {
 
 // silhouettes[i] is view i's (CV_8UC1, non-zero = object). A point whose view list is empty
 // counts as outside.
@@ -18,4 +18,4 @@ double InsideAllSilhouettesFraction(const mvs::MvsPoints& points,
                                     const std::vector<dataset::View>& views,
                                     const std::vector<cv::Mat>& silhouettes);
 
-}  // namespace avc::bench
+}  // namespace avc::eval
