@@ -4,6 +4,7 @@
 #include "bench/calibration/calibration_bench.h"
 #include "bench/clustering/clustering_bench.h"
 #include "bench/devices/devices_bench.h"
+#include "bench/merge/merge_bench.h"
 #include "bench/mvs/mvs_bench.h"
 #include "bench/render/render_bench.h"
 
@@ -32,6 +33,10 @@ const std::vector<Benchmark>& AllBenchmarks() {
        "the paper's Table 2 replica: Algorithm 2 against k-means, iPDDP, dense and sparse "
        "spectral, PCL region growing on six labelled plant point sets",
        RunClusteringBenchmark},
+      {"merge",
+       "model merging (paper §3.1) into the plant proxy's voxels with 5 % injected outliers on "
+       "simulated scans: points before and after, RMSE to the ground truth raw and merged",
+       RunMergeBenchmark},
       {"mvs",
        "the builder's patch MVS against PMVS2's published run and a plane-sweep ZNCC comparator "
        "on the Middlebury dinoSparseRing and on simulated plants (30 views, 1280x960): points per "

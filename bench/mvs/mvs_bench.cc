@@ -11,8 +11,8 @@
 #include "bench/mvs/mvs_bench_case.h"
 #include "bench/mvs/ppr_bench_case.h"
 #include "bench/registry.h"
+#include "bench/simulated_scan.h"
 #include "bench/summary.h"
-#include "sim/dataset/render_dataset.h"
 
 namespace avc::bench {
 namespace {
@@ -259,23 +259,12 @@ int RunMvsBenchmark(const std::vector<std::string>& arguments) {
   std::vector<Row> scaling_rows;
   std::vector<PprRow> ppr_rows;
   for (const std::string& preset : presets) {
-    const fs::path scan = work / preset;
-    if (!fs::exists(scan / "cameras.json")) {
-      std::cerr << "rendering " << preset << " (30 views, 1280x960)\n";
-      const IsolatedResult rendered = RunIsolated([&] {
-        sim::RenderDatasetOptions options;
-        options.preset = sim::ParsePreset(preset);
-        options.views = 30;
-        options.rings = 3;
-        options.noise = true;
-        options.output = scan;
-        sim::RenderDataset(options);
-        return nlohmann::json::object();
-      });
-      if (!rendered.ok) {
-        std::cerr << "  rendering failed: " << rendered.error << "\n";
-        continue;
-      }
+    fs::path scan;
+    try {
+      scan = EnsureSimulatedScan(work, preset);
+    } catch (const std::runtime_error& e) {
+      std::cerr << "  " << e.what() << "\n";
+      continue;
     }
     ppr_rows.push_back(RunPprRow({preset, scan, 0.002}, repeats));
     if (proxy_only) continue;

@@ -1,0 +1,32 @@
+#include "bench/simulated_scan.h"
+
+#include <iostream>
+#include <stdexcept>
+
+#include "bench/mvs/isolated_run.h"
+#include "sim/dataset/render_dataset.h"
+
+namespace avc::bench {
+
+std::filesystem::path EnsureSimulatedScan(const std::filesystem::path& work,
+                                          const std::string& preset) {
+  const std::filesystem::path scan = work / preset;
+  if (std::filesystem::exists(scan / "cameras.json")) return scan;
+  std::cerr << "rendering " << preset << " (30 views, 1280x960)\n";
+  const IsolatedResult rendered = RunIsolated([&] {
+    sim::RenderDatasetOptions options;
+    options.preset = sim::ParsePreset(preset);
+    options.views = 30;
+    options.rings = 3;
+    options.noise = true;
+    options.output = scan;
+    sim::RenderDataset(options);
+    return nlohmann::json::object();
+  });
+  if (!rendered.ok) {
+    throw std::runtime_error("rendering the " + preset + " scan failed: " + rendered.error);
+  }
+  return scan;
+}
+
+}  // namespace avc::bench
