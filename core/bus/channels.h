@@ -36,6 +36,7 @@ inline constexpr std::string_view kProductMesh = "PRODUCT/MESH";
 inline constexpr std::string_view kProductVoxelMap = "PRODUCT/VOXEL_MAP";
 inline constexpr std::string_view kProductBench = "PRODUCT/BENCH";
 inline constexpr std::string_view kProductMvsPoints = "PRODUCT/MVS_POINTS";
+inline constexpr std::string_view kProductClusters = "PRODUCT/CLUSTERS";
 // Prefix shared by every product channel.
 inline constexpr std::string_view kProductPrefix = "PRODUCT/";
 
@@ -64,6 +65,7 @@ inline constexpr std::array kAll = {kHeartbeat,
                                     kProductMesh,
                                     kProductVoxelMap,
                                     kProductBench,
-                                    kProductMvsPoints};
+                                    kProductMvsPoints,
+                                    kProductClusters};
 
 }  // namespace avc::channels

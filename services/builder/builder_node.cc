@@ -14,12 +14,13 @@
 
 #include "core/bus/channels.h"
 #include "core/dataset/view_transforms.h"
+#include "core/messages/camera_message.h"
+#include "core/messages/mvs_points_message.h"
 #include "core/mvs/mvs_points_io.h"
 #include "core/ppr/proxy_bounds.h"
 #include "core/segmentation/plant_mask.h"
 #include "core/util/log.h"
 #include "services/builder/node_inputs.h"
-#include "services/builder/node_mvs_message.h"
 
 namespace avc::builder {
 namespace {
@@ -167,7 +168,7 @@ void BuilderNode::OnCamera(const avc::camera_t& message) {
   if (id.empty() || views_.count(id) != 0) return;
   camera::Camera camera;
   try {
-    camera = CameraFromMessage(message);
+    camera = messages::CameraFromMessage(message);
   } catch (const std::exception& error) {
     log::Warn("{}; ignored", error.what());
     return;
@@ -477,7 +478,7 @@ void BuilderNode::OnMvsFinished(MvsOutcome outcome) {
   if (outcome.error.empty()) {
     try {
       const avc::mvs_points_t message =
-          MvsPointsToMessage(outcome.points, outcome.image_ids, outcome.cloud_id);
+          messages::MvsPointsToMessage(outcome.points, outcome.image_ids, outcome.cloud_id);
       if (!options_.output_dir.empty()) {
         // The product is what matters; a local copy that cannot be written is only reported.
         try {

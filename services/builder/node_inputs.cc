@@ -2,17 +2,12 @@
 
 #include <fmt/format.h>
 
-#include <cmath>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
 namespace avc::builder {
 namespace {
-
-// Rigid transforms from calibration are orthonormal to double precision; this tolerance only
-// catches matrices that are not rotations at all (scaled, sheared, garbage).
-constexpr double kRotationTolerance = 1e-6;
 
 cv::Mat DecodeRaw(const avc::image_t& image) {
   const bool gray = image.pixel_format == avc::image_t::PIXEL_GRAY8;
@@ -76,43 +71,6 @@ cv::Mat DecodeImage(const avc::image_t& image) {
                                             bgr.rows));
   }
   return bgr;
-}
-
-camera::Camera CameraFromMessage(const avc::camera_t& message) {
-  camera::Camera camera;
-  camera::Intrinsics& k = camera.intrinsics;
-  k.width = message.width;
-  k.height = message.height;
-  k.fx = message.fx;
-  k.fy = message.fy;
-  k.cx = message.cx;
-  k.cy = message.cy;
-  for (int i = 0; i < 5; ++i) k.distortion[static_cast<size_t>(i)] = message.distortion[i];
-  std::string problem = k.Validate();
-  if (problem.empty() && !(std::isfinite(k.fx) && std::isfinite(k.fy))) {
-    problem = "focal lengths are not finite";
-  }
-  if (!problem.empty()) {
-    throw std::invalid_argument(fmt::format("camera of image '{}': {}", message.image_id, problem));
-  }
-  Eigen::Matrix4d pose;
-  for (int r = 0; r < 4; ++r) {
-    for (int c = 0; c < 4; ++c) pose(r, c) = message.T_cam_world[4 * r + c];
-  }
-  if (!pose.allFinite()) {
-    throw std::invalid_argument(
-        fmt::format("camera of image '{}': T_cam_world is not finite", message.image_id));
-  }
-  const Eigen::Matrix3d rotation = pose.topLeftCorner<3, 3>();
-  const double orthogonality =
-      (rotation.transpose() * rotation - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
-  if (orthogonality > kRotationTolerance || rotation.determinant() < 0 ||
-      pose.row(3) != Eigen::RowVector4d(0, 0, 0, 1)) {
-    throw std::invalid_argument(fmt::format(
-        "camera of image '{}': T_cam_world is not a rigid transform", message.image_id));
-  }
-  camera.T_cam_world.matrix() = pose;
-  return camera;
 }
 
 }  // namespace avc::builder

@@ -8,6 +8,7 @@
 
 #include "core/bus/channels.h"
 #include "core/calibration/cell/calibration_yaml.h"
+#include "core/messages/camera_message.h"
 #include "core/util/log.h"
 #include "core/util/sha256.h"
 
@@ -75,20 +76,7 @@ void CalibratorNode::PublishCalibration() {
 }
 
 void CalibratorNode::PublishCamera(const std::string& image_id, const camera::Camera& camera) {
-  avc::camera_t message{};
-  message.image_id = image_id;
-  message.camera_id = options_.camera_id;
-  const camera::Intrinsics& k = camera.intrinsics;
-  message.width = k.width;
-  message.height = k.height;
-  message.fx = k.fx;
-  message.fy = k.fy;
-  message.cx = k.cx;
-  message.cy = k.cy;
-  for (int i = 0; i < 5; ++i) message.distortion[i] = k.distortion[static_cast<size_t>(i)];
-  for (int r = 0; r < 4; ++r) {
-    for (int c = 0; c < 4; ++c) message.T_cam_world[4 * r + c] = camera.T_cam_world.matrix()(r, c);
-  }
+  avc::camera_t message = messages::CameraToMessage(camera, image_id, options_.camera_id);
   bus_.Publish(channels::kCamera, message);
   ++cameras_published_;
 }

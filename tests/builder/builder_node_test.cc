@@ -17,9 +17,10 @@
 
 #include "core/bus/channels.h"
 #include "core/dataset/dataset_reader.h"
+#include "core/messages/camera_message.h"
+#include "core/messages/mvs_points_message.h"
 #include "core/products/product_receiver.h"
 #include "core/products/product_sender.h"
-#include "services/builder/node_mvs_message.h"
 #include "sim/dataset/render_dataset.h"
 #include "tests/support/test_support.h"
 
@@ -68,21 +69,7 @@ avc::image_t ImageMessage(const dataset::View& view) {
 }
 
 avc::camera_t CameraMessage(const std::string& id, const camera::Camera& camera) {
-  avc::camera_t message{};
-  message.image_id = id;
-  message.camera_id = "cam0";
-  const camera::Intrinsics& k = camera.intrinsics;
-  message.width = k.width;
-  message.height = k.height;
-  message.fx = k.fx;
-  message.fy = k.fy;
-  message.cx = k.cx;
-  message.cy = k.cy;
-  for (int i = 0; i < 5; ++i) message.distortion[i] = k.distortion[static_cast<size_t>(i)];
-  for (int r = 0; r < 4; ++r) {
-    for (int c = 0; c < 4; ++c) message.T_cam_world[4 * r + c] = camera.T_cam_world.matrix()(r, c);
-  }
-  return message;
+  return messages::CameraToMessage(camera, id, "cam0");
 }
 
 template <class T>
@@ -261,7 +248,7 @@ TEST(BuilderNode, GrowsTheProxyAsViewsArriveAndRunsMvsLikeTheOfflineBuild) {
   EXPECT_FALSE(h.busy_details.empty());
   EXPECT_NE(h.busy_details.back().find("MVS 'mvs-1'"), std::string::npos);
 
-  const MvsPointsMessageContent bus = MvsPointsFromMessage(h.mvs_points[0]);
+  const messages::MvsPointsMessageContent bus = messages::MvsPointsFromMessage(h.mvs_points[0]);
   EXPECT_EQ(h.mvs_points[0].cloud_id, "plant1-mvs-mvs-1");
   std::vector<std::string> sorted_ids;
   for (const dataset::View& view : set.views) sorted_ids.push_back(IdOf(view));
@@ -280,7 +267,7 @@ TEST(BuilderNode, GrowsTheProxyAsViewsArriveAndRunsMvsLikeTheOfflineBuild) {
   ASSERT_TRUE(h.WaitFor([&] { return h.Final("mvs-2").has_value(); }, milliseconds(60000)));
   EXPECT_EQ(h.Final("mvs-2")->status, avc::ack_t::STATUS_DONE) << h.Final("mvs-2")->reason;
   ASSERT_EQ(h.mvs_points.size(), 2u);
-  const MvsPointsMessageContent chosen = MvsPointsFromMessage(h.mvs_points[1]);
+  const messages::MvsPointsMessageContent chosen = messages::MvsPointsFromMessage(h.mvs_points[1]);
   EXPECT_EQ(chosen.image_ids, (std::vector<std::string>{"view_0000", "view_0001", "view_0003",
                                                         "view_0004", "view_0006"}));
   dataset::ViewSet chosen_set = dataset::ReadDataset(Scan());

@@ -1,12 +1,10 @@
-// The builder node's input decoding: image_t in every encoding and pixel format it takes gives
-// the same BGR pixels, and corrupt or unusable images and cameras are refused by name.
+// The builder node's image decoding: image_t in every encoding and pixel format it takes gives
+// the same BGR pixels, and corrupt or unusable images are refused by name.
 
 #include "services/builder/node_inputs.h"
 
 #include <gtest/gtest.h>
 
-#include <array>
-#include <cmath>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -107,67 +105,6 @@ TEST(NodeInputs, RefusesCorruptOrUnusableImagesNamingThem) {
   EXPECT_NE(ErrorOf(Message("v", {}, avc::image_t::ENCODING_JPEG, avc::image_t::PIXEL_BGR8, 32, 24))
                 .find("do not decode"),
             std::string::npos);
-}
-
-avc::camera_t GoodCamera() {
-  avc::camera_t camera{};
-  camera.image_id = "view_3";
-  camera.width = 320;
-  camera.height = 240;
-  camera.fx = camera.fy = 400;
-  camera.cx = 159.5;
-  camera.cy = 119.5;
-  camera.distortion[0] = -0.1;
-  const Eigen::Matrix3d rotation =
-      Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
-  for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c) camera.T_cam_world[4 * r + c] = rotation(r, c);
-    camera.T_cam_world[4 * r + 3] = std::array{0.1, 0.2, 0.3}[static_cast<size_t>(r)];
-  }
-  camera.T_cam_world[15] = 1;
-  return camera;
-}
-
-std::string ErrorOf(const avc::camera_t& camera) {
-  try {
-    CameraFromMessage(camera);
-  } catch (const std::invalid_argument& error) {
-    return error.what();
-  }
-  return "";
-}
-
-TEST(NodeInputs, TakesRigidCamerasAndRefusesBadOnesByField) {
-  const camera::Camera camera = CameraFromMessage(GoodCamera());
-  EXPECT_EQ(camera.intrinsics.width, 320);
-  EXPECT_EQ(camera.intrinsics.distortion[0], -0.1);
-  EXPECT_EQ(camera.T_cam_world.translation(), Eigen::Vector3d(0.1, 0.2, 0.3));
-
-  avc::camera_t bad = GoodCamera();
-  bad.fx = std::nan("");
-  EXPECT_NE(ErrorOf(bad).find("camera of image 'view_3': focal"), std::string::npos)
-      << ErrorOf(bad);
-  bad = GoodCamera();
-  bad.fy = INFINITY;
-  EXPECT_NE(ErrorOf(bad).find("focal lengths are not finite"), std::string::npos);
-  bad = GoodCamera();
-  bad.width = 0;
-  EXPECT_NE(ErrorOf(bad).find("image size 0x240"), std::string::npos);
-  bad = GoodCamera();
-  bad.distortion[4] = std::nan("");
-  EXPECT_NE(ErrorOf(bad).find("distortion"), std::string::npos);
-  bad = GoodCamera();
-  bad.T_cam_world[7] = std::nan("");
-  EXPECT_NE(ErrorOf(bad).find("T_cam_world is not finite"), std::string::npos);
-  bad = GoodCamera();
-  for (int c = 0; c < 3; ++c) bad.T_cam_world[c] *= 1.01;  // scaled row
-  EXPECT_NE(ErrorOf(bad).find("not a rigid transform"), std::string::npos);
-  bad = GoodCamera();
-  for (int c = 0; c < 3; ++c) bad.T_cam_world[c] = -bad.T_cam_world[c];  // a reflection
-  EXPECT_NE(ErrorOf(bad).find("not a rigid transform"), std::string::npos);
-  bad = GoodCamera();
-  bad.T_cam_world[12] = 0.5;
-  EXPECT_NE(ErrorOf(bad).find("not a rigid transform"), std::string::npos);
 }
 
 }  // namespace

@@ -11,7 +11,7 @@
 
 #include "core/mvs/mvs_points.h"
 
-namespace avc::builder {
+namespace avc::messages {
 
 struct MvsPointsMessageContent {
   mvs::MvsPoints points;
@@ -28,4 +28,4 @@ avc::mvs_points_t MvsPointsToMessage(const mvs::MvsPoints& points,
 // r g b). Throws std::invalid_argument naming the cloud and the field or point at fault.
 MvsPointsMessageContent MvsPointsFromMessage(const avc::mvs_points_t& message);
 
-}  // namespace avc::builder
+}  // namespace avc::messages

@@ -2,7 +2,7 @@
 // point cloud PointCloudToPly can write, other layouts read by field name, and every malformed
 // message is refused with a message naming the field or point.
 
-#include "services/builder/node_mvs_message.h"
+#include "core/messages/mvs_points_message.h"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 #include "core/products/point_cloud_ply.h"
 #include "tests/support/test_support.h"
 
-namespace avc::builder {
+namespace avc::messages {
 namespace {
 
 // Values from raw generator bits, so the points are the same with any standard library.
@@ -201,4 +201,4 @@ TEST(NodeMvsMessage, RefusesMalformedMessagesNamingTheProblem) {
 }
 
 }  // namespace
-}  // namespace avc::builder
+}  // namespace avc::messages
