@@ -1,11 +1,15 @@
-// Bad cameras, masks and boxes give std::invalid_argument naming the view and the field.
+// Bad cameras, masks, boxes and octrees give std::invalid_argument naming the view and the field.
 
 #include <gtest/gtest.h>
+#include <octomap/OcTree.h>
 
+#include <functional>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
+#include "core/ppr/octree_voxels.h"
 #include "core/ppr/plant_proxy.h"
 #include "core/ppr/proxy_bounds.h"
 #include "tests/ppr/synthetic_views.h"
@@ -103,6 +107,48 @@ TEST(PlantProxyBounds, EmptyMasksLeaveNothingToBound) {
   const auto cameras = testing::RingCameras(6, 0.4);
   const std::vector<cv::Mat> masks(6, cv::Mat(480, 640, CV_8UC1, cv::Scalar(0)));
   EXPECT_THROW(BoundsFromViews(cameras, masks), std::runtime_error);
+}
+
+TEST(OccupiedVoxelsFromBinary, GarbageWrongSizeAndHugeTreesAreRefused) {
+  const auto message = [](const std::function<void()>& read) {
+    try {
+      read();
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message([] { OccupiedVoxelsFromBinary("", 0.002, "map 'x'"); }).find("map 'x'"),
+            std::string::npos);
+  EXPECT_NE(message([] {
+              OccupiedVoxelsFromBinary("# Octomap OcTree binary file\nid OcTree\n", 0.002,
+                                       "map 'x'");
+            }).find("not an OctoMap binary"),
+            std::string::npos);
+
+  octomap::OcTree tree(0.002);
+  tree.updateNode(octomap::point3d(0.01f, 0.01f, 0.01f), true);
+  std::ostringstream bytes;
+  ASSERT_TRUE(tree.writeBinaryConst(bytes));
+  EXPECT_EQ(OccupiedVoxelsFromBinary(bytes.str(), 0.002, "one").occupied_centres.size(), 1u);
+  EXPECT_NE(message([&] {
+              OccupiedVoxelsFromBinary(bytes.str(), 0.003, "one");
+            }).find("is not the voxel size"),
+            std::string::npos);
+  // Eight occupied children prune into one node of 8 voxels: over a limit of 7.
+  for (float x : {0.0005f, 0.0025f}) {
+    for (float y : {0.0005f, 0.0025f}) {
+      for (float z : {0.0005f, 0.0025f}) tree.updateNode(octomap::point3d(x, y, z), true);
+    }
+  }
+  tree.prune();
+  std::ostringstream pruned;
+  ASSERT_TRUE(tree.writeBinaryConst(pruned));
+  EXPECT_NE(message([&] {
+              OccupiedVoxelsFromBinary(pruned.str(), 0.002, "big", {.max_voxels = 7});
+            }).find("refusing to expand"),
+            std::string::npos);
+  EXPECT_EQ(OccupiedVoxelsFromBinary(pruned.str(), 0.002, "big").occupied_centres.size(), 9u);
 }
 
 }  // namespace

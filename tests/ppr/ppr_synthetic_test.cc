@@ -1,5 +1,5 @@
 // The proxy on analytic shapes seen by ring cameras: volume, states, k tolerance, view-order
-// independence, resolution increase and the .bt round trip.
+// independence, resolution increase, the .bt round trip and the occupied voxels read back.
 
 #include <gtest/gtest.h>
 #include <octomap/OcTree.h>
@@ -9,6 +9,7 @@
 #include <numeric>
 #include <random>
 
+#include "core/ppr/octree_voxels.h"
 #include "core/ppr/plant_proxy.h"
 #include "core/ppr/proxy_bounds.h"
 #include "tests/ppr/synthetic_views.h"
@@ -238,6 +239,25 @@ TEST(PlantProxyOctree, BinaryRoundTripKeepsTheLeaves) {
     if (read.isNodeOccupied(*it)) occupied_volume += std::pow(it.getSize(), 3);
   }
   EXPECT_NEAR(occupied_volume, OccupiedVolume(proxy), 1e-12);
+}
+
+TEST(PlantProxyOctree, OccupiedVoxelsReadBackEqualTheProxys) {
+  PlantProxy proxy = CarveSphere(SphereOptions(), InOrder(12));
+  for (int pass = 0; pass < 2; ++pass) {
+    const mvs::MvsBounds expected = proxy.ToMvsBounds();
+    // The sphere's inside is pruned into large nodes: the reader must expand them.
+    const mvs::MvsBounds read =
+        OccupiedVoxelsFromBinary(proxy.BinaryBytes(), proxy.voxel_size(), "sphere.bt");
+    ASSERT_GT(expected.occupied_centres.size(), 1000u);
+    EXPECT_EQ(read.occupied_centres, expected.occupied_centres);
+    EXPECT_EQ(read.voxel_size, expected.voxel_size);
+    // Without the exact size, the tree's 6-digit one gives the same voxels within float noise.
+    const mvs::MvsBounds rounded = OccupiedVoxelsFromBinary(proxy.BinaryBytes(), 0, "sphere.bt");
+    ASSERT_EQ(rounded.occupied_centres.size(), expected.occupied_centres.size());
+    EXPECT_NEAR((rounded.occupied_centres.back() - expected.occupied_centres.back()).norm(), 0,
+                1e-6);
+    proxy.IncreaseResolution();
+  }
 }
 
 }  // namespace
