@@ -1,6 +1,6 @@
 // avc reconstruct: the reconstruction half of a scan on images with known cameras (a scan
 // directory, a COLMAP text model or a Middlebury set): masks, plant proxy, multi-view stereo,
-// written with a scan directory's file names.
+// merging and clustering, written with a scan directory's file names.
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -14,6 +14,9 @@
 #include "services/builder/option_overrides.h"
 #include "services/builder/reconstruction.h"
 #include "services/builder/reconstruction_output.h"
+#include "services/clusterer/clusters_ply.h"
+#include "services/clusterer/merge_and_cluster.h"
+#include "tools/avc/cluster_cli.h"
 #include "tools/avc/commands.h"
 #include "tools/avc/run_guarded.h"
 
@@ -72,7 +75,19 @@ int RunReconstruct(const ReconstructArgs& args) {
   const auto files =
       builder::WriteReconstruction(output, set, reconstruction, report, args.overwrite);
   std::cout << builder::BuildReportToText(report);
-  std::cout << fmt::format("wrote {} files to {}\n", files.size(), output.string());
+  size_t written = files.size();
+  if (reconstruction.merged.size() > 0) {
+    // Clustering (paper §3.2) of the merged points, as the clusterer service would.
+    const messages::ClustersContent clusters = clusterer::ClusterMerged(
+        reconstruction.merged, static_cast<int64_t>(reconstruction.points.size()), {}, "points",
+        "ppr");
+    std::cout << DescribeClusters(clusters) << "\n";
+    if (clusters.problem.empty()) {
+      clusterer::WriteClustersPly(output / "clusters.ply", clusters);
+      ++written;
+    }
+  }
+  std::cout << fmt::format("wrote {} files to {}\n", written, output.string());
   if (args.json) std::cout << builder::BuildReportToJson(report).dump() << "\n";
   return 0;
 }
@@ -86,7 +101,8 @@ void RegisterReconstruct(CLI::App& root, int* exit_code) {
       "Reconstruct a plant from images with known cameras: plant masks (automatic unless\n"
       "masks/<image name> are given), the plant proxy (tolerant octree carving, ppr.bt) and\n"
       "multi-view stereo points (points.ply, with confidence and the images that see each\n"
-      "point).\n"
+      "point), merged into the proxy's voxels (merged.ply) and clustered into surface patches\n"
+      "(clusters.ply).\n"
       "Datasets: a scan directory (cameras.json + images/), a COLMAP text model (cameras.txt +\n"
       "images.txt, in the folder or in sparse/ or colmap/) or a Middlebury set (*_par.txt).\n"
       "A simulated scan's ground truth (gt_mesh.ply) is used to report accuracy.\n"

@@ -25,5 +25,7 @@ void RegisterCalibrate(CLI::App& root, int* exit_code);
 void RegisterCalibrator(CLI::App& root, int* exit_code);
 void RegisterReconstruct(CLI::App& root, int* exit_code);
 void RegisterBuilder(CLI::App& root, int* exit_code);
+void RegisterCluster(CLI::App& root, int* exit_code);
+void RegisterClusterer(CLI::App& root, int* exit_code);
 
 }  // namespace avc::cli

@@ -51,6 +51,8 @@ int main(int argc, char** argv) {
   avc::cli::RegisterCalibrator(app, &exit_code);
   avc::cli::RegisterReconstruct(app, &exit_code);
   avc::cli::RegisterBuilder(app, &exit_code);
+  avc::cli::RegisterCluster(app, &exit_code);
+  avc::cli::RegisterClusterer(app, &exit_code);
   ShortenListings(app);
   try {
     app.parse(argc, argv);
