@@ -60,6 +60,7 @@ int RunMergeBenchmark(const std::vector<std::string>& arguments) {
   uint64_t seed = 1;
   int repeats = 5;
   bool with_mvs = false;
+  double voxel_mm = 0;
   bool json = false;
   std::string work_dir;
   CLI::App app{
@@ -76,6 +77,10 @@ int RunMergeBenchmark(const std::vector<std::string>& arguments) {
   app.add_option("--repeats", repeats, "timed merges per case (median reported)")
       ->capture_default_str()
       ->check(CLI::Range(1, 100));
+  app.add_option("--voxel-mm", voxel_mm,
+                 "final proxy voxel in mm (0: the builder's automatic one, box edge / 256)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 50.0));
   app.add_flag("--mvs", with_mvs, "also merge the patch MVS points of each scan (13-50 s each)");
   app.add_option("--work-dir", work_dir,
                  "where the scans are rendered (default: a temporary folder, removed); "
@@ -101,7 +106,8 @@ int RunMergeBenchmark(const std::vector<std::string>& arguments) {
     std::vector<RawSource> sources = {RawSource::kSimulated};
     if (with_mvs) sources.push_back(RawSource::kPatchMvs);
     for (RawSource source : sources) {
-      const MergeCase merge_case{preset, scan, source, outlier_fraction, seed, repeats};
+      const MergeCase merge_case{preset, scan,    source,         outlier_fraction,
+                                 seed,   repeats, voxel_mm * 1e-3};
       std::cerr << fmt::format("  {}: {} cloud\n", preset, SourceName(source));
       rows.push_back({merge_case, RunIsolated([&] { return RunMergeCase(merge_case); })});
       failed = failed || !rows.back().run.ok;

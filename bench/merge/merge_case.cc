@@ -41,6 +41,7 @@ nlohmann::json RunMergeCase(const MergeCase& merge_case) {
   builder::ReconstructOptions options;
   options.method = merge_case.source == RawSource::kPatchMvs ? builder::MvsMethod::kPatch
                                                              : builder::MvsMethod::kNone;
+  options.proxy.final_voxel_size = merge_case.voxel_size;
   builder::Reconstruction reconstruction = builder::Reconstruct(set, options);
 
   mvs::MvsPoints raw = merge_case.source == RawSource::kPatchMvs

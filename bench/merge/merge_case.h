@@ -22,6 +22,7 @@ struct MergeCase {
   double outlier_fraction = 0.05;
   uint64_t seed = 1;
   int merge_repeats = 5;  // timed merges; the median is reported
+  double voxel_size = 0;  // final proxy voxel, metres; 0 = the builder's automatic one
 };
 
 // Figures: voxel_size_m, raw_points, injected_outliers, merged_points, removed_points
