@@ -1,0 +1,25 @@
+#pragma once
+
+// A cell: one cluster triangulated on its regression plane and lifted back onto the original
+// points (paper §4, Phase 1). Phase 2 (image-driven level sets, not yet implemented) would grow
+// a cell's boundary in plane coordinates and append the new vertices (source_points -1) before
+// Phase 3 smooths and repairs it.
+
+#include <cstdint>
+#include <vector>
+
+#include "core/geometry/mesh.h"
+#include "core/surface/plane_frame.h"
+
+namespace avc::surface {
+
+struct Cell {
+  int32_t cluster = -1;
+  PlaneFrame plane;  // normal oriented with the points' normals
+  // vertices (m), faces oriented so their front faces along plane.normal, colours when the input
+  // had them, face_labels = cluster.
+  geometry::Mesh mesh;
+  std::vector<int32_t> source_points;  // per vertex: input point index, -1 for generated ones
+};
+
+}  // namespace avc::surface

@@ -1,0 +1,80 @@
+#include "core/surface/surface_options.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace avc::surface {
+namespace {
+
+void RequirePositive(double value, const char* field) {
+  if (!(value > 0.0) || !std::isfinite(value)) {
+    throw std::invalid_argument(
+        fmt::format("surface options: {} must be positive and finite, got {}", field, value));
+  }
+}
+
+void ValidateSmoothing(const SmoothingOptions& smoothing, const char* field) {
+  if (smoothing.iterations < 0) {
+    throw std::invalid_argument(fmt::format("surface options: {}.iterations must be >= 0, got {}",
+                                            field, smoothing.iterations));
+  }
+  if (!(smoothing.lambda > 0.0 && smoothing.lambda < 1.0)) {
+    throw std::invalid_argument(fmt::format("surface options: {}.lambda must be in (0, 1), got {}",
+                                            field, smoothing.lambda));
+  }
+  if (!(smoothing.mu < -smoothing.lambda && smoothing.mu > -1.0)) {
+    throw std::invalid_argument(fmt::format(
+        "surface options: {}.mu must be in (-1, -lambda), got {}", field, smoothing.mu));
+  }
+}
+
+}  // namespace
+
+void SurfaceOptions::Validate() const {
+  if (!std::isfinite(spacing)) {
+    throw std::invalid_argument("surface options: spacing must be finite (<= 0 to measure it)");
+  }
+  if (!std::isfinite(noise)) {
+    throw std::invalid_argument("surface options: noise must be finite (< 0 to measure it)");
+  }
+  RequirePositive(piece_link_factor, "piece_link_factor");
+  if (!std::isfinite(growth_scale)) {
+    throw std::invalid_argument("surface options: growth_scale must be finite (<= 0: automatic)");
+  }
+  RequirePositive(alpha_factor, "alpha_factor");
+  RequirePositive(growth_clearance_factor, "growth_clearance_factor");
+  RequirePositive(long_edge_factor, "long_edge_factor");
+  RequirePositive(hole_perimeter_factor, "hole_perimeter_factor");
+  RequirePositive(stitch_factor, "stitch_factor");
+  if (!(min_boundary_quality >= 0.0 && min_boundary_quality < 1.0)) {
+    throw std::invalid_argument(fmt::format(
+        "surface options: min_boundary_quality must be in [0, 1), got {}", min_boundary_quality));
+  }
+  if (!(max_stitch_tilt_deg > 0.0 && max_stitch_tilt_deg <= 90.0)) {
+    throw std::invalid_argument(fmt::format(
+        "surface options: max_stitch_tilt_deg must be in (0, 90], got {}", max_stitch_tilt_deg));
+  }
+  if (min_component_faces < 0) {
+    throw std::invalid_argument(fmt::format(
+        "surface options: min_component_faces must be >= 0, got {}", min_component_faces));
+  }
+  ValidateSmoothing(cell_smoothing, "cell_smoothing");
+  ValidateSmoothing(final_smoothing, "final_smoothing");
+}
+
+SurfaceThresholds ResolveThresholds(const SurfaceOptions& options, double spacing, double noise) {
+  SurfaceThresholds t;
+  t.spacing = spacing;
+  t.noise = noise;
+  t.piece_link = options.piece_link_factor * spacing;
+  t.alpha = options.alpha_factor * spacing;
+  t.long_edge = options.long_edge_factor * spacing;
+  t.hole_perimeter = options.hole_perimeter_factor * spacing;
+  t.stitch_distance = options.stitch_factor * spacing;
+  t.growth_clearance = options.growth_clearance_factor * spacing;
+  return t;
+}
+
+}  // namespace avc::surface

@@ -1,0 +1,198 @@
+#include "core/surface/surface_reconstruction.h"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+#include "core/cluster/data_scale.h"
+#include "core/cluster/point_grid.h"
+#include "core/surface/boundary_growth.h"
+#include "core/surface/cluster_pieces.h"
+#include "core/surface/hole_filling.h"
+#include "core/surface/laplacian_smoothing.h"
+#include "core/surface/mesh_topology.h"
+#include "core/surface/triangulate_cell.h"
+
+namespace avc::surface {
+namespace {
+
+// The usable points, flattened, with the cell each belongs to (-1 for none yet).
+struct UsablePoints {
+  std::vector<Eigen::Vector3f> positions;
+  std::vector<uint32_t> input_index;
+  std::vector<int> cell;
+};
+
+UsablePoints Flatten(const ClusteredPoints& input, const ClusterMembers& members) {
+  UsablePoints usable;
+  for (const std::vector<uint32_t>& group : members.points) {
+    for (uint32_t i : group) {
+      usable.positions.push_back(input.cloud.positions[i]);
+      usable.input_index.push_back(i);
+    }
+  }
+  usable.cell.assign(usable.positions.size(), -1);
+  return usable;
+}
+
+// Spacing and noise in force: given, or measured on the usable points. False (with a warning)
+// when the spacing cannot be measured.
+bool MeasureScales(const UsablePoints& usable, const SurfaceOptions& options, double* spacing,
+                   double* noise, std::vector<std::string>* warnings) {
+  *spacing = options.spacing;
+  *noise = options.noise;
+  if (*spacing > 0.0 && *noise >= 0.0) return true;
+  try {
+    const cluster::DataScale scale = cluster::EstimateDataScale(usable.positions);
+    if (!(*spacing > 0.0)) *spacing = scale.spacing;
+    if (*noise < 0.0) *noise = scale.noise;
+    return true;
+  } catch (const std::invalid_argument& error) {
+    if (*spacing > 0.0) {
+      *noise = 0.0;
+      return true;
+    }
+    warnings->push_back(fmt::format(
+        "surface: cannot measure the point spacing ({}); no surface made", error.what()));
+    return false;
+  }
+}
+
+// Phase 1: every cluster, piece by piece, into cells. Marks each usable point's cell.
+std::vector<Cell> TriangulateClusters(const ClusteredPoints& input, const ClusterMembers& members,
+                                      const SurfaceThresholds& thresholds, UsablePoints* usable,
+                                      SurfaceReport* report) {
+  std::vector<Cell> cells;
+  std::vector<int> cell_of_input(input.cloud.size(), -1);
+  for (size_t c = 0; c < members.ids.size(); ++c) {
+    const std::vector<uint32_t>& group = members.points[c];
+    const auto pieces =
+        SplitIntoPieces(input, group, thresholds.piece_link, 3.0 * thresholds.noise);
+    std::string problem;
+    size_t made = 0;
+    for (const std::vector<uint32_t>& piece : pieces) {
+      std::string piece_problem;
+      std::vector<Cell> piece_cells =
+          TriangulateSurfacePiece(input, members.ids[c], piece, thresholds.alpha, &piece_problem);
+      if (piece_cells.empty()) {
+        report->points_left_out += piece.size();
+        if (problem.empty() || piece.size() >= 3) problem = piece_problem;
+        continue;
+      }
+      for (Cell& cell : piece_cells) {
+        for (int32_t i : cell.source_points) cell_of_input[i] = static_cast<int>(cells.size());
+        report->phase1_faces += cell.mesh.faces.size();
+        cells.push_back(std::move(cell));
+        ++made;
+      }
+    }
+    if (made == 0) {
+      report->warnings.push_back(fmt::format("cluster {} ({} points): {}; its points are left out",
+                                             members.ids[c], group.size(), problem));
+    }
+  }
+  for (size_t k = 0; k < usable->positions.size(); ++k) {
+    usable->cell[k] = cell_of_input[usable->input_index[k]];
+  }
+  return cells;
+}
+
+// Phase 2 stand-in: outlines away from other cells grow by the sampling's edge band.
+void GrowCells(std::vector<Cell>& cells, const UsablePoints& usable, SurfaceThresholds& thresholds,
+               double growth_scale, SurfaceReport* report) {
+  thresholds.growth_band = EstimateBoundaryBand(cells, thresholds.spacing, growth_scale);
+  if (!(thresholds.growth_band > 0.0)) return;
+  const float reach = static_cast<float>(thresholds.growth_clearance);
+  const cluster::PointGrid grid(usable.positions, reach);
+  for (size_t c = 0; c < cells.size(); ++c) {
+    Cell& cell = cells[c];
+    const auto is_free = [&](int vertex) {
+      bool near_other = false;
+      grid.ForEachWithin(cell.mesh.vertices[vertex], reach, [&](uint32_t j) {
+        if (usable.cell[j] != static_cast<int>(c)) near_other = true;
+      });
+      return !near_other;
+    };
+    const GrowthStats stats = GrowOuterBoundary(cell, thresholds.growth_band, is_free);
+    report->grown_vertices += stats.vertices;
+  }
+}
+
+size_t RemoveSmallComponents(geometry::Mesh& mesh, int min_faces) {
+  int count = 0;
+  const std::vector<int> component = FaceComponents(mesh, &count);
+  std::vector<int> size(count, 0);
+  for (int c : component) ++size[c];
+  std::vector<bool> keep(mesh.faces.size(), true);
+  size_t removed = 0;
+  for (int c = 0; c < count; ++c) removed += size[c] < min_faces ? 1 : 0;
+  for (size_t f = 0; f < keep.size(); ++f) keep[f] = size[component[f]] >= min_faces;
+  if (removed > 0) KeepFaces(mesh, keep);
+  return removed;
+}
+
+// Phase 4: cells stitched into one mesh, junction holes filled, final smoothing.
+geometry::Mesh MergeCells(const std::vector<Cell>& cells, const SurfaceOptions& options,
+                          const SurfaceThresholds& thresholds, SurfaceReport* report) {
+  std::vector<int> vertex_cell;
+  geometry::Mesh mesh = JoinCells(cells, &vertex_cell);
+  std::vector<Eigen::Vector3d> normals;
+  std::vector<int32_t> labels;
+  for (const Cell& cell : cells) {
+    normals.push_back(cell.plane.normal);
+    labels.push_back(cell.cluster);
+  }
+  report->stitching = StitchCells(mesh, vertex_cell, normals, labels, thresholds.stitch_distance,
+                                  options.max_stitch_tilt_deg);
+  report->area_stitched = geometry::SurfaceArea(mesh);
+  report->merged_holes_filled = FillSmallHoles(mesh, thresholds.hole_perimeter);
+  SmoothSheet(mesh, options.final_smoothing);
+  report->fragments_removed = RemoveSmallComponents(mesh, options.min_component_faces);
+  RemoveUnusedVertices(mesh);
+  return mesh;
+}
+
+}  // namespace
+
+SurfaceResult ReconstructSurface(const ClusteredPoints& input, const SurfaceOptions& options) {
+  options.Validate();
+  SurfaceResult result;
+  SurfaceReport& report = result.report;
+  report.input_points = input.cloud.size();
+  const ClusterMembers members = GroupByCluster(input, &report.warnings);
+  report.clusters = members.ids.size();
+  UsablePoints usable = Flatten(input, members);
+  report.used_points = usable.positions.size();
+
+  double spacing = 0.0;
+  double noise = 0.0;
+  if (!MeasureScales(usable, options, &spacing, &noise, &report.warnings)) return result;
+  SurfaceThresholds thresholds = ResolveThresholds(options, spacing, noise);
+
+  const auto total_area = [](const std::vector<Cell>& all) {
+    double area = 0.0;
+    for (const Cell& cell : all) area += geometry::SurfaceArea(cell.mesh);
+    return area;
+  };
+  std::vector<Cell> cells = TriangulateClusters(input, members, thresholds, &usable, &report);
+  report.area_triangulated = total_area(cells);
+  if (options.grow_boundary) GrowCells(cells, usable, thresholds, options.growth_scale, &report);
+  report.area_grown = total_area(cells);
+  for (Cell& cell : cells) {
+    report.modifications += ModifyCellMesh(cell.mesh, options, thresholds);
+    cell.source_points.resize(cell.mesh.vertices.size(), -1);
+  }
+  report.area_modified = total_area(cells);
+  std::erase_if(cells, [](const Cell& cell) { return cell.mesh.faces.empty(); });
+  report.cells = cells.size();
+  report.thresholds = thresholds;
+
+  result.mesh = MergeCells(cells, options, thresholds, &report);
+  report.vertices = result.mesh.vertices.size();
+  report.faces = result.mesh.faces.size();
+  report.area = geometry::SurfaceArea(result.mesh);
+  FaceComponents(result.mesh, &report.components);
+  return result;
+}
+
+}  // namespace avc::surface

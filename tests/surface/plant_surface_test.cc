@@ -1,0 +1,191 @@
+// The surfacer on the simulated plants: ~3000 points sampled on the leaves of each preset (the
+// paper's merged density, 0.2 mm noise), clustered one cluster per leaf or by the paper's
+// Algorithm 2, surfaced, and evaluated against the leaves' ground truth (core/eval). The
+// figures are printed.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <map>
+
+#include "core/cluster/cluster_plant.h"
+#include "core/eval/metrics.h"
+#include "core/eval/triangle_tree.h"
+#include "core/surface/mesh_topology.h"
+#include "core/surface/surface_reconstruction.h"
+#include "core/traits/plant_traits.h"
+#include "sim/scene/plant.h"
+#include "tests/surface/surface_test_points.h"
+
+namespace avc::surface {
+namespace {
+
+constexpr int kPoints = 3000;
+constexpr double kNoise = 0.0002;  // m per axis, as the Table 2 sets
+
+struct LeafConnectivity {
+  int leaves = 0;
+  int one_component = 0;  // the leaf's reconstruction is one connected piece
+  int mostly_one = 0;     // its largest connected piece holds >= 95 % of its area
+};
+
+// Each reconstructed face belongs to the leaf of the ground-truth face nearest its centroid; a
+// leaf is one component when its faces form a single connected piece. Faces of a neighbour's
+// stitch or outline that lie nearer this leaf make stray bits of a few faces, so the count of
+// leaves with >= 95 % of their area in one piece is kept too.
+LeafConnectivity CountConnectedLeaves(const geometry::Mesh& truth, const geometry::Mesh& mesh) {
+  const eval::TriangleTree tree(truth, "leaves");
+  std::map<int32_t, geometry::Mesh> per_leaf;
+  for (size_t f = 0; f < truth.faces.size(); ++f) per_leaf[truth.face_labels[f]];
+  for (const Eigen::Vector3i& t : mesh.faces) {
+    const Eigen::Vector3d centroid =
+        (mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]]).cast<double>() / 3.0;
+    const int32_t label = truth.face_labels[tree.Closest(centroid).face];
+    geometry::Mesh& leaf = per_leaf[label];
+    if (leaf.vertices.empty()) leaf.vertices = mesh.vertices;
+    leaf.faces.push_back(t);
+  }
+  LeafConnectivity result;
+  for (const auto& [label, leaf] : per_leaf) {
+    ++result.leaves;
+    int components = 0;
+    const std::vector<int> component = FaceComponents(leaf, &components);
+    if (components == 1) ++result.one_component;
+    std::vector<double> area(components, 0.0);
+    double total = 0.0;
+    for (size_t f = 0; f < leaf.faces.size(); ++f) {
+      const Eigen::Vector3i& t = leaf.faces[f];
+      const double a =
+          0.5 * static_cast<double>((leaf.vertices[t[1]] - leaf.vertices[t[0]])
+                                        .cross(leaf.vertices[t[2]] - leaf.vertices[t[0]])
+                                        .norm());
+      area[component[f]] += a;
+      total += a;
+    }
+    if (components > 0 && *std::max_element(area.begin(), area.end()) >= 0.95 * total) {
+      ++result.mostly_one;
+    }
+  }
+  return result;
+}
+
+struct Figures {
+  double area_ratio = 0;
+  double rmse = 0;
+  double connected_fraction = 0;         // leaves in one piece
+  double mostly_connected_fraction = 0;  // leaves with >= 95 % of their area in one piece
+  double seconds = 0;
+  SurfaceReport report;
+};
+
+// clustered: clusters from the paper's Algorithm 2 (cluster::ClusterPlant); else one cluster
+// per leaf (its ground-truth label).
+Figures Measure(sim::PlantPreset preset, uint32_t seed, bool clustered) {
+  const sim::Scene scene = sim::GeneratePlant(preset, seed);
+  geometry::Mesh truth;
+  ClusteredPoints points = test::SampleLeaves(scene.mesh, kPoints, kNoise, seed, &truth);
+  if (clustered) {
+    cluster::PointSet set;
+    set.points = points.cloud.positions;
+    set.normals = points.cloud.normals;
+    points.clusters = cluster::ClusterPlant(set);
+  }
+
+  const auto start = std::chrono::steady_clock::now();
+  const SurfaceResult result = ReconstructSurface(points);
+  Figures figures;
+  figures.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  figures.report = result.report;
+  const eval::EvalResult eval = eval::EvaluateMesh(truth, result.mesh, eval::EvalOptions{});
+  figures.area_ratio = eval.area_ratio.value_or(0.0);
+  figures.rmse = eval.accuracy.rmse;
+  const LeafConnectivity leaves = CountConnectedLeaves(truth, result.mesh);
+  figures.connected_fraction = static_cast<double>(leaves.one_component) / leaves.leaves;
+  figures.mostly_connected_fraction = static_cast<double>(leaves.mostly_one) / leaves.leaves;
+  std::printf(
+      "%-9s seed %u %s: area ratio %.3f, RMSE %.2f mm, leaves one component %d/%d (95 %% of area "
+      "in one: %d), %.3f s "
+      "(spacing %.2f mm, %zu clusters, %zu cells, %zu stitch faces, %zu components)\n",
+      std::string(sim::PresetName(preset)).c_str(), seed,
+      clustered ? "Algorithm 2 clusters" : "leaf clusters", figures.area_ratio, 1e3 * figures.rmse,
+      leaves.one_component, leaves.leaves, leaves.mostly_one, figures.seconds,
+      1e3 * result.report.thresholds.spacing, result.report.clusters, result.report.cells,
+      result.report.stitching.faces, static_cast<size_t>(result.report.components));
+  return figures;
+}
+
+class PlantSurfaceTest : public ::testing::TestWithParam<sim::PlantPreset> {};
+
+// One cluster per leaf: the targets (area ratio 0.9-1.1; RMSE well under the 3 mm
+// spacing) are met on every preset. Connectivity: the share of leaves with >= 95 % of their
+// area in one piece (the rosette's crossing leaf bases keep it at 0.83-0.89 for seeds 1-3).
+TEST_P(PlantSurfaceTest, LeafClusters) {
+  const Figures figures = Measure(GetParam(), 1, false);
+  EXPECT_GE(figures.area_ratio, 0.9);
+  EXPECT_LE(figures.area_ratio, 1.1);
+  EXPECT_LT(figures.rmse, 0.001);
+  EXPECT_GE(figures.mostly_connected_fraction, 0.8);
+}
+
+// Clusters from the paper's Algorithm 2 (several per leaf, some spanning leaves at the rosette's
+// centre). The area target holds on every preset. Connectivity is printed, not asserted: it
+// follows the clustering (core/cluster, still changing) more than the surfacer; measured with
+// seed 1 it ranged over 10-16 of 18 rosette leaves, 11/11 broadleaf, 12-14/14 strap, 49/50
+// bushy leaves with >= 95 % of their area in one piece.
+TEST_P(PlantSurfaceTest, AlgorithmTwoClusters) {
+  const Figures figures = Measure(GetParam(), 1, true);
+  EXPECT_GE(figures.area_ratio, 0.9);
+  EXPECT_LE(figures.area_ratio, 1.1);
+  EXPECT_LT(figures.rmse, 0.002);
+}
+
+INSTANTIATE_TEST_SUITE_P(Presets, PlantSurfaceTest, ::testing::ValuesIn(sim::AllPresets()),
+                         [](const auto& param_info) {
+                           return std::string(sim::PresetName(param_info.param));
+                         });
+
+// The traits of the surfaced leaves against the traits of the true leaves.
+TEST(PlantSurface, TraitsMatchTheTruth) {
+  const sim::Scene scene = sim::GeneratePlant(sim::PlantPreset::kBroadleaf, 2);
+  geometry::Mesh truth;
+  ClusteredPoints points = test::SampleLeaves(scene.mesh, kPoints, kNoise, 2, &truth);
+  cluster::PointSet set;
+  set.points = points.cloud.positions;
+  set.normals = points.cloud.normals;
+  points.clusters = cluster::ClusterPlant(set);
+  const geometry::Mesh mesh = ReconstructSurface(points).mesh;
+  traits::TraitOptions options;
+  options.ground_z = 0.0;
+  const traits::PlantTraits measured = traits::MeasureTraits(mesh, options);
+  const traits::PlantTraits expected = traits::MeasureTraits(truth, options);
+  EXPECT_NEAR(measured.height, expected.height, 0.003);
+  EXPECT_NEAR(measured.width, expected.width, 0.02 * expected.width);
+  EXPECT_NEAR(measured.total_area, expected.total_area, 0.1 * expected.total_area);
+  EXPECT_NEAR(measured.hull_volume, expected.hull_volume, 0.1 * expected.hull_volume);
+  EXPECT_GT(measured.clusters.size(), 5u);
+}
+
+TEST(PlantSurface, SameInputGivesTheSameBytes) {
+  const sim::Scene scene = sim::GeneratePlant(sim::PlantPreset::kBushy, 4);
+  geometry::Mesh truth;
+  ClusteredPoints points = test::SampleLeaves(scene.mesh, kPoints, kNoise, 4, &truth);
+  cluster::PointSet set;
+  set.points = points.cloud.positions;
+  set.normals = points.cloud.normals;
+  points.clusters = cluster::ClusterPlant(set);
+  const geometry::Mesh a = ReconstructSurface(points).mesh;
+  const geometry::Mesh b = ReconstructSurface(points).mesh;
+  ASSERT_EQ(a.vertices.size(), b.vertices.size());
+  ASSERT_EQ(a.faces.size(), b.faces.size());
+  EXPECT_EQ(0, std::memcmp(a.vertices.data(), b.vertices.data(),
+                           a.vertices.size() * sizeof(Eigen::Vector3f)));
+  EXPECT_EQ(0,
+            std::memcmp(a.faces.data(), b.faces.data(), a.faces.size() * sizeof(Eigen::Vector3i)));
+  EXPECT_EQ(a.face_labels, b.face_labels);
+}
+
+}  // namespace
+}  // namespace avc::surface

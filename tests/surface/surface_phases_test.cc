@@ -1,0 +1,225 @@
+// The surfacer's phases one by one on small meshes with known answers: boundary loops, hole
+// filling, sliver and long-triangle removal, Laplacian smoothing, Phase 1 triangulation (incl.
+// the fold split), boundary growth and stitching.
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <utility>
+
+#include "core/surface/boundary_growth.h"
+#include "core/surface/cell_merging.h"
+#include "core/surface/hole_filling.h"
+#include "core/surface/laplacian_smoothing.h"
+#include "core/surface/mesh_topology.h"
+#include "core/surface/triangle_cleanup.h"
+#include "core/surface/triangulate_cell.h"
+#include "tests/surface/surface_test_points.h"
+
+namespace avc::surface {
+namespace {
+
+// An n x n grid of unit-pitch squares (pitch h) in z = 0, facing +z, label 0.
+geometry::Mesh Grid(int n, float h = 1.0f) {
+  geometry::Mesh mesh;
+  for (int j = 0; j <= n; ++j) {
+    for (int i = 0; i <= n; ++i) mesh.vertices.emplace_back(h * i, h * j, 0.0f);
+  }
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+      mesh.faces.emplace_back(a, b, d);
+      mesh.faces.emplace_back(a, d, c);
+    }
+  }
+  mesh.face_labels.assign(mesh.faces.size(), 0);
+  return mesh;
+}
+
+// Removes the two faces of each grid square (i, j) listed.
+void Punch(geometry::Mesh& mesh, int n, const std::vector<std::pair<int, int>>& squares) {
+  std::vector<bool> keep(mesh.faces.size(), true);
+  for (const auto& [i, j] : squares) keep[2 * (j * n + i)] = keep[2 * (j * n + i) + 1] = false;
+  KeepFaces(mesh, keep);
+}
+
+TEST(MeshTopology, GridHasOneCounterClockwiseOuterLoop) {
+  const geometry::Mesh mesh = Grid(4);
+  const std::vector<BoundaryLoop> loops = BoundaryLoops(mesh);
+  ASSERT_EQ(loops.size(), 1u);
+  EXPECT_TRUE(loops[0].closed);
+  EXPECT_EQ(loops[0].vertices.size(), 16u);
+  EXPECT_DOUBLE_EQ(loops[0].Perimeter(mesh), 16.0);
+  // Counter-clockwise seen from +z: positive signed area.
+  double twice_area = 0.0;
+  for (size_t i = 0; i < loops[0].vertices.size(); ++i) {
+    const Eigen::Vector3f& a = mesh.vertices[loops[0].vertices[i]];
+    const Eigen::Vector3f& b = mesh.vertices[loops[0].vertices[(i + 1) % 16]];
+    twice_area += a.x() * b.y() - b.x() * a.y();
+  }
+  EXPECT_NEAR(twice_area, 32.0, 1e-9);
+  int components = 0;
+  FaceComponents(mesh, &components);
+  EXPECT_EQ(components, 1);
+}
+
+TEST(HoleFilling, SmallHolesAreFilledTheOuterBoundaryNever) {
+  geometry::Mesh mesh = Grid(6);
+  Punch(mesh, 6, {{2, 2}, {4, 3}});
+  ASSERT_EQ(BoundaryLoops(mesh).size(), 3u);
+  EXPECT_EQ(FillSmallHoles(mesh, 3.9), 0u);  // holes have perimeter 4
+  EXPECT_EQ(FillSmallHoles(mesh, 100.0), 2u);
+  EXPECT_EQ(BoundaryLoops(mesh).size(), 1u);
+  EXPECT_NEAR(geometry::SurfaceArea(mesh), 36.0, 1e-6);
+  EXPECT_TRUE(mesh.Validate().empty());
+  ASSERT_EQ(mesh.face_labels.size(), mesh.faces.size());
+  // The fillings face the same way as the sheet.
+  for (const Eigen::Vector3i& t : mesh.faces) {
+    const Eigen::Vector3f n = (mesh.vertices[t[1]] - mesh.vertices[t[0]])
+                                  .cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]);
+    EXPECT_GT(n.z(), 0.0f);
+  }
+}
+
+TEST(TriangleCleanup, LongTrianglesAndBoundarySliversGo) {
+  geometry::Mesh mesh = Grid(2);
+  // A sliver on the boundary: a far, nearly collinear vertex below the bottom edge.
+  mesh.vertices.emplace_back(1.0f, -0.05f, 0.0f);
+  const int sliver = static_cast<int>(mesh.vertices.size()) - 1;
+  mesh.faces.emplace_back(0, sliver, 2);
+  mesh.face_labels.push_back(0);
+  EXPECT_EQ(PeelBoundarySlivers(mesh, 0.1), 1u);
+  EXPECT_EQ(mesh.faces.size(), 8u);
+  mesh.vertices[8] = Eigen::Vector3f(2.0f, 2.0f, 5.0f);  // lift a corner: its two faces
+  EXPECT_EQ(RemoveLongTriangles(mesh, 3.0), 2u);
+  EXPECT_EQ(mesh.faces.size(), 6u);
+}
+
+TEST(LaplacianSmoothing, NoiseGoesTheSheetKeepsItsSize) {
+  geometry::Mesh mesh = Grid(20, 0.01f);
+  std::mt19937_64 rng(4);
+  for (Eigen::Vector3f& v : mesh.vertices) v.z() += static_cast<float>(0.002 * test::Gaussian(rng));
+  const double noisy_area = geometry::SurfaceArea(mesh);
+  SmoothSheet(mesh, SmoothingOptions{});
+  double rms = 0.0;
+  for (const Eigen::Vector3f& v : mesh.vertices) rms += v.z() * v.z();
+  rms = std::sqrt(rms / static_cast<double>(mesh.vertices.size()));
+  EXPECT_LT(rms, 0.0012);
+  EXPECT_LT(geometry::SurfaceArea(mesh), noisy_area);
+  EXPECT_NEAR(geometry::SurfaceArea(mesh), 0.04, 0.04 * 0.03);
+  // Boundary vertices move only along the outline: it stays on the square.
+  const std::vector<BoundaryLoop> loops = BoundaryLoops(mesh);
+  for (int v : loops[0].vertices) {
+    const Eigen::Vector3f& p = mesh.vertices[v];
+    const float to_edge = std::min(
+        {std::abs(p.x()), std::abs(p.y()), std::abs(p.x() - 0.2f), std::abs(p.y() - 0.2f)});
+    EXPECT_LT(to_edge, 2.5e-3f);  // a quarter pitch: only the corners round off
+  }
+}
+
+TEST(TriangulateCell, FlatClusterBecomesAnOrientedCell) {
+  const ClusteredPoints points = test::SpiralDisc(0.02, 400);
+  std::vector<uint32_t> members(points.cloud.size());
+  for (uint32_t i = 0; i < members.size(); ++i) members[i] = i;
+  std::string problem;
+  const Cell cell = TriangulateCell(points, 0, members, 0.004, &problem);
+  EXPECT_TRUE(problem.empty());
+  EXPECT_NEAR(cell.plane.normal.z(), 1.0, 1e-9);
+  EXPECT_GT(cell.mesh.faces.size(), 700u);
+  EXPECT_EQ(BoundaryLoops(cell.mesh).size(), 1u);
+  ASSERT_EQ(cell.source_points.size(), cell.mesh.vertices.size());
+  EXPECT_EQ(cell.source_points[10], 10);
+}
+
+TEST(TriangulateCell, NormalsDecideTheFrontSide) {
+  ClusteredPoints points = test::SpiralDisc(0.02, 100);
+  for (Eigen::Vector3f& n : points.cloud.normals) n = -n;
+  std::vector<uint32_t> members(points.cloud.size());
+  for (uint32_t i = 0; i < members.size(); ++i) members[i] = i;
+  const Cell cell = TriangulateCell(points, 0, members, 0.01, nullptr);
+  EXPECT_NEAR(cell.plane.normal.z(), -1.0, 1e-9);
+}
+
+TEST(TriangulateSurfacePiece, ArchIsSplitUntilEachPartIsAHeightField) {
+  // A sheet bent through 240 degrees: its projection on any plane folds over.
+  const ClusteredPoints points =
+      test::CylinderSheet(0.02, 4.0 * std::numbers::pi / 3.0, 0.04, 2000, 2);
+  std::vector<uint32_t> members(points.cloud.size());
+  for (uint32_t i = 0; i < members.size(); ++i) members[i] = i;
+  std::string problem;
+  const std::vector<Cell> cells = TriangulateSurfacePiece(points, 0, members, 0.004, &problem);
+  EXPECT_GE(cells.size(), 2u);
+  double area = 0.0;
+  for (const Cell& cell : cells) area += geometry::SurfaceArea(cell.mesh);
+  const double truth = 0.02 * 4.0 * std::numbers::pi / 3.0 * 0.04;
+  EXPECT_GT(area / truth, 0.85);
+  EXPECT_LT(area / truth, 1.01);
+}
+
+TEST(BoundaryGrowth, EvenGridGrowsByHalfAPitch) {
+  Cell cell;
+  cell.mesh = Grid(10, 0.001f);
+  cell.source_points.assign(cell.mesh.vertices.size(), 0);
+  const std::vector<Cell> cells = {cell};
+  const double band = EstimateBoundaryBand(cells, 0.001, 1.0);
+  EXPECT_NEAR(band, 0.0005, 1e-9);
+  const GrowthStats stats = GrowOuterBoundary(cell, band, [](int) { return true; });
+  EXPECT_EQ(stats.vertices, 40u);
+  EXPECT_EQ(stats.faces, 80u);
+  // The 10 x 10 mm square grew by 0.5 mm a side (corners cut: ~11 x 11 mm less a bit).
+  const double area = geometry::SurfaceArea(cell.mesh);
+  EXPECT_GT(area, 1.2e-4);
+  EXPECT_LT(area, 1.21e-4);
+  EXPECT_EQ(BoundaryLoops(cell.mesh).size(), 1u);
+  ASSERT_EQ(cell.source_points.size(), cell.mesh.vertices.size());
+  EXPECT_EQ(cell.source_points.back(), -1);
+  // Vertices that are not free stay.
+  Cell held;
+  held.mesh = Grid(4);
+  held.source_points.assign(held.mesh.vertices.size(), 0);
+  EXPECT_EQ(GrowOuterBoundary(held, 0.5, [](int) { return false; }).vertices, 0u);
+}
+
+TEST(CellMerging, GapBetweenTwoHalvesIsTriangulated) {
+  // Two 10 x 5 grids one pitch apart: the gap strip is 10 x 1.
+  Cell lower;
+  lower.mesh = Grid(10);
+  std::vector<bool> keep(lower.mesh.faces.size());
+  for (size_t f = 0; f < keep.size(); ++f) keep[f] = f < 100;  // rows 0-4
+  KeepFaces(lower.mesh, keep);
+  RemoveUnusedVertices(lower.mesh);
+  Cell upper = lower;
+  upper.cluster = 1;
+  for (Eigen::Vector3f& v : upper.mesh.vertices) v.y() += 6.0f;
+  upper.mesh.face_labels.assign(upper.mesh.faces.size(), 1);
+  std::vector<int> vertex_cell;
+  geometry::Mesh mesh = JoinCells({lower, upper}, &vertex_cell);
+  const StitchStats stats = StitchCells(
+      mesh, vertex_cell, {Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitZ()}, {0, 1}, 1.6, 60.0);
+  EXPECT_EQ(stats.neighbour_pairs, 1u);
+  EXPECT_EQ(stats.faces, 20u);
+  EXPECT_NEAR(geometry::SurfaceArea(mesh), 110.0, 1e-6);
+  int components = 0;
+  FaceComponents(mesh, &components);
+  EXPECT_EQ(components, 1);
+  EXPECT_EQ(BoundaryLoops(mesh).size(), 1u);  // manifold, consistently oriented
+}
+
+TEST(CellMerging, StackedSheetsAreNotWalledTogether) {
+  Cell lower;
+  lower.mesh = Grid(6);
+  Cell upper = lower;
+  upper.cluster = 1;
+  for (Eigen::Vector3f& v : upper.mesh.vertices) v.z() += 1.0f;
+  std::vector<int> vertex_cell;
+  geometry::Mesh mesh = JoinCells({lower, upper}, &vertex_cell);
+  const StitchStats stats = StitchCells(
+      mesh, vertex_cell, {Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitZ()}, {0, 1}, 1.6, 60.0);
+  EXPECT_EQ(stats.faces, 0u);
+}
+
+}  // namespace
+}  // namespace avc::surface
