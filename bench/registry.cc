@@ -6,6 +6,7 @@
 #include "bench/devices/devices_bench.h"
 #include "bench/merge/merge_bench.h"
 #include "bench/mvs/mvs_bench.h"
+#include "bench/nbv/nbv_bench.h"
 #include "bench/render/render_bench.h"
 
 namespace avc::bench {
@@ -42,6 +43,11 @@ const std::vector<Benchmark>& AllBenchmarks() {
        "on the Middlebury dinoSparseRing and on simulated plants (30 views, 1280x960): points per "
        "image, inside-silhouette fraction, precision/recall, wall time, peak memory",
        RunMvsBenchmark},
+      {"nbv",
+       "the planner's active vision (Algorithm 1) against one and two static cameras, random "
+       "views, the 3x10 orbit and an information-gain planner in the simulated cell: ground-truth "
+       "coverage against images",
+       RunNbvBenchmark},
   };
   return benchmarks;
 }

@@ -101,4 +101,10 @@ double RobotAzimuth(const CellTruth& cell) {
   return std::atan2(base.y(), base.x());
 }
 
+kinematics::JointVector StartJoints(const CellTruth& cell) {
+  kinematics::JointVector q;
+  q << RobotAzimuth(cell), -1.2, 1.6, -1.9, -1.5708, 0;
+  return q;
+}
+
 }  // namespace avc::sim

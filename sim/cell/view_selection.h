@@ -59,4 +59,8 @@ std::optional<ReachableView> FirstReachableView(const CellTruth& cell,
 // within about +-60 degrees of it are the comfortable ones for the arm.
 double RobotAzimuth(const CellTruth& cell);
 
+// An elbow-up, wrist-down start facing the turntable: inverse kinematics keeps to its branch
+// from view to view when each search starts from the joints of the view before.
+kinematics::JointVector StartJoints(const CellTruth& cell);
+
 }  // namespace avc::sim

@@ -125,9 +125,7 @@ std::vector<View> PlanViews(const RenderDatasetOptions& options, const CellTruth
   const double height = max.z() - min.z();
   const Eigen::Vector3d centre_world(0, 0, 0.5 * (min.z() + max.z()));
   const double azimuth = RobotAzimuth(cell);
-  // An elbow-up, wrist-down start: inverse kinematics keeps to its branch from view to view.
-  kinematics::JointVector current;
-  current << azimuth, -1.2, 1.6, -1.9, -1.5708, 0;
+  kinematics::JointVector current = StartJoints(cell);
   std::vector<View> views;
   for (int ring = 0; ring < options.rings; ++ring) {
     const int in_ring = options.views / options.rings + (ring < options.views % options.rings);

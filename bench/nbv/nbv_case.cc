@@ -1,0 +1,123 @@
+#include "bench/nbv/nbv_case.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "bench/mvs/plant_organs.h"
+#include "bench/nbv/simulated_capture.h"
+#include "bench/summary.h"
+#include "core/eval/coverage.h"
+#include "services/planner/active_vision.h"
+#include "services/planner/baseline_views.h"
+#include "services/planner/information_gain.h"
+#include "sim/dataset/render_dataset.h"
+
+namespace avc::bench {
+namespace {
+
+constexpr double kDegree = M_PI / 180;
+
+// Coverage of the first 1, 2, ... cameras: curve[n - 1] after n.
+std::vector<double> CoverageCurve(const eval::CoverageModel& model,
+                                  const std::vector<camera::Camera>& cameras) {
+  std::vector<int> counts(model.samples().size(), 0);
+  std::vector<double> curve;
+  const int needed = model.options().min_views;
+  size_t covered = 0;
+  for (const camera::Camera& camera : cameras) {
+    const std::vector<uint8_t> seen = model.SeenBy(camera);
+    for (size_t s = 0; s < seen.size(); ++s) {
+      if (seen[s] && ++counts[s] == needed) ++covered;
+    }
+    curve.push_back(counts.empty() ? 0.0 : static_cast<double>(covered) / counts.size());
+  }
+  return curve;
+}
+
+nlohmann::json MethodJson(const std::string& name, const eval::CoverageModel& model,
+                          const std::vector<camera::Camera>& cameras) {
+  const std::vector<double> curve = CoverageCurve(model, cameras);
+  nlohmann::json json = {{"method", name},
+                         {"images", cameras.size()},
+                         {"coverage", curve.empty() ? 0.0 : curve.back()}};
+  for (const int n : {10, 20, 30}) {
+    if (static_cast<int>(curve.size()) >= n) json[fmt::format("after_{}", n)] = curve[n - 1];
+  }
+  const auto reach = std::find_if(curve.begin(), curve.end(), [](double c) { return c >= 0.9; });
+  if (reach != curve.end()) json["images_to_90"] = reach - curve.begin() + 1;
+  return json;
+}
+
+std::vector<camera::Camera> Cameras(const std::vector<planner::CellView>& views) {
+  std::vector<camera::Camera> cameras;
+  for (const planner::CellView& v : views) cameras.push_back(v.camera);
+  return cameras;
+}
+
+}  // namespace
+
+nlohmann::json RunNbvCase(const NbvCase& nbv_case) {
+  sim::RenderDatasetOptions scene_options;
+  if (nbv_case.mesh_file.empty()) {
+    scene_options.preset = sim::ParsePreset(nbv_case.plant);
+  } else {
+    scene_options.mesh_file = nbv_case.mesh_file;
+  }
+  const sim::Scene scene = sim::MakeScene(scene_options);
+  const sim::CellTruth cell = sim::MakeCell(scene_options);
+  const eval::CoverageModel model(PlantOrgans(scene.mesh), 2e5, nbv_case.seed);
+
+  SimulatedCapture capture(scene, nbv_case.render_scale);
+  const planner::ActiveVisionResult ours =
+      planner::RunActiveVision(cell, [&](const planner::CellView& view) { return capture(view); });
+
+  std::vector<camera::Camera> kept, initial;
+  for (const planner::PlannedView& v : ours.views) {
+    if (v.kept) kept.push_back(v.view.camera);
+    if (v.phase == "initial") initial.push_back(v.view.camera);
+  }
+  nlohmann::json methods = nlohmann::json::array();
+  nlohmann::json our_json = MethodJson("ours (Algorithm 1)", model, kept);
+  our_json["captured"] = ours.views.size();
+  our_json["patches"] = ours.patches;
+  our_json["failing_patches"] = ours.failing_patches;
+  if (!ours.iteration_seconds.empty()) {
+    const Summary planning = Summarize(ours.iteration_seconds);
+    our_json["planning_s_median"] = planning.median;
+    our_json["planning_s_max"] = planning.max;
+    our_json["iterations"] = planning.count;
+    our_json["planning_s_per_view"] = ours.planning_seconds_per_view;
+  }
+  our_json["notes"] = ours.notes;
+  methods.push_back(our_json);
+  methods.push_back(MethodJson("orbit 3x10 (Phase 1 alone)", model, initial));
+
+  // The baselines around the same framed plant: the middle height's distance and the aim.
+  planner::BaselineFrame frame;
+  frame.aim = ours.aim;
+  frame.distance =
+      ours.framed_distances.empty() ? 0.5 : ours.framed_distances[ours.framed_distances.size() / 2];
+  const int n = nbv_case.baseline_views;
+  methods.push_back(MethodJson(fmt::format("one static camera ({})", n), model,
+                               Cameras(planner::StaticCameraViews(cell, frame, 30 * kDegree, n))));
+  methods.push_back(MethodJson(
+      fmt::format("two static cameras ({})", n), model,
+      Cameras(planner::TwoStaticCameraViews(cell, frame, 10 * kDegree, 60 * kDegree, n))));
+  methods.push_back(MethodJson(fmt::format("random reachable ({})", n), model,
+                               Cameras(planner::RandomViews(cell, frame, n, nbv_case.seed))));
+  // At our image count, on the proxy box our run found.
+  const int ours_count = static_cast<int>(kept.size());
+  methods.push_back(
+      MethodJson(fmt::format("information gain ({})", ours_count), model,
+                 Cameras(planner::InformationGainViews(
+                     cell, [&](const planner::CellView& view) { return capture(view); },
+                     ours.proxy->box(), frame.aim, frame.distance, ours_count))));
+  return {{"plant", nbv_case.plant},
+          {"samples", model.samples().size()},
+          {"renders", capture.captures()},
+          {"methods", methods}};
+}
+
+}  // namespace avc::bench

@@ -1,0 +1,28 @@
+#pragma once
+
+// One plant of `avc bench nbv`: the planner runs Algorithm 1 in the simulated cell (rendered
+// captures, automatic masks), the baselines take their views around the same framed plant, and
+// every view set is scored by the coverage of the plant's ground-truth surface (seen by >= 3
+// views at a grazing angle under 75 degrees, occlusion included; eval/coverage.h).
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace avc::bench {
+
+struct NbvCase {
+  std::string plant;                // a preset name, or a label for mesh_file
+  std::filesystem::path mesh_file;  // non-empty: this mesh instead of a preset
+  double render_scale = 0.5;
+  int baseline_views = 40;
+  uint64_t seed = 1;
+};
+
+// Figures: per method (ours, orbit 3x10, one static, two static, random, information gain at our
+// image count) the images, coverage,
+// coverage after 10/20/30 images and images to 90 %; ours also captured, planning seconds per
+// next-best-view iteration (median, max), patches, failing patches and notes.
+nlohmann::json RunNbvCase(const NbvCase& nbv_case);
+
+}  // namespace avc::bench

@@ -1,0 +1,235 @@
+#include "services/planner/active_vision.h"
+
+#include <fmt/format.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <chrono>
+#include <numeric>
+#include <stdexcept>
+
+#include "core/ppr/proxy_bounds.h"
+#include "services/planner/framing.h"
+#include "services/planner/redundant_views.h"
+#include "services/planner/view_sphere_search.h"
+#include "sim/cell/view_selection.h"
+
+namespace avc::planner {
+namespace {
+
+constexpr double kDegree = M_PI / 180;
+
+Eigen::Vector3d EyeAt(const Eigen::Vector3d& aim, double distance, double elevation,
+                      double azimuth) {
+  return aim + distance * Eigen::Vector3d(std::cos(elevation) * std::cos(azimuth),
+                                          std::cos(elevation) * std::sin(azimuth),
+                                          std::sin(elevation));
+}
+
+// What Algorithm 1 keeps while it runs: the views with their masks, the proxy, the joints.
+struct Run {
+  const sim::CellTruth& cell;
+  const CaptureFunction& capture;
+  const ActiveVisionOptions& options;
+  ActiveVisionResult result;
+  std::vector<cv::Mat> masks;  // per result.views entry
+  kinematics::JointVector joints;
+  std::vector<double> distances;  // Phase 1's per height
+
+  // Captures `view` and records it; false when the capture failed.
+  bool Take(PlannedView planned) {
+    std::optional<cv::Mat> mask = capture(planned.view);
+    if (!mask) {
+      result.notes.push_back(fmt::format("capture failed at turntable {:.1f} deg ({}); skipped",
+                                         planned.view.turntable_angle / kDegree, planned.reason));
+      return false;
+    }
+    joints = planned.view.joints;
+    if (result.proxy) result.proxy->AddView(planned.view.camera, *mask);
+    masks.push_back(std::move(*mask));
+    result.views.push_back(std::move(planned));
+    return true;
+  }
+
+  void InitialLevel(int level) {
+    const double elevation = options.elevations_deg[level] * kDegree;
+    const double first_azimuth = level * options.level_offset_deg * kDegree;
+    FramingRequest request;
+    request.elevation = elevation;
+    request.start_distance = options.start_distance;
+    request.start_aim_height = options.start_aim_height;
+    request.fill = options.frame_fill;
+    request.tolerance = options.frame_tolerance;
+    request.iterations = options.frame_iterations;
+    const Framing framing = FramePlant(
+        request,
+        [&](double distance,
+            const Eigen::Vector3d& aim) -> std::optional<std::pair<CellView, cv::Mat>> {
+          const auto view = RealiseView(cell, EyeAt(aim, distance, elevation, first_azimuth), aim,
+                                        {}, joints, options.reach);
+          if (!view) return std::nullopt;
+          auto mask = capture(*view);
+          if (!mask) return std::nullopt;
+          return std::pair{*view, std::move(*mask)};
+        });
+    if (!framing.note.empty()) result.notes.push_back(framing.note);
+    distances.push_back(framing.distance);
+    result.aim = framing.aim;
+    const Eigen::AlignedBox3d keep_out =
+        result.proxy ? result.proxy->OccupiedBounds() : Eigen::AlignedBox3d();
+    for (int n = 0; n < options.views_per_level; ++n) {
+      const double azimuth = first_azimuth + 2 * M_PI * n / options.views_per_level;
+      // Nearer when the arm cannot reach the framed distance there (the image then shows less
+      // margin; the proxy tolerates a plant cut at the border only as unknown space).
+      std::optional<CellView> view;
+      for (double scale = 1.0; !view && scale > 0.6; scale -= 0.1) {
+        view = RealiseView(cell, EyeAt(framing.aim, scale * framing.distance, elevation, azimuth),
+                           framing.aim, keep_out, joints, options.reach);
+      }
+      if (!view) {
+        result.notes.push_back(fmt::format(
+            "height {} view {}: unreachable at elevation {:.0f} deg, azimuth {:.0f} deg; skipped",
+            level + 1, n + 1, elevation / kDegree, azimuth / kDegree));
+        continue;
+      }
+      Take({*view, "initial",
+            fmt::format("height {} ({:.0f} deg), view {} of {}", level + 1, elevation / kDegree,
+                        n + 1, options.views_per_level)});
+    }
+    if (!result.proxy) CreateProxy(level);
+  }
+
+  void CreateProxy(int level) {
+    std::vector<camera::Camera> cameras;
+    for (const PlannedView& v : result.views) cameras.push_back(v.view.camera);
+    if (cameras.size() < 2) {
+      throw std::runtime_error(
+          fmt::format("height {}: {} views could be taken; the plant proxy needs at least 2",
+                      level + 1, cameras.size()));
+    }
+    result.proxy.emplace(ppr::BoundsFromViews(cameras, masks), options.proxy);
+    for (size_t i = 0; i < cameras.size(); ++i) result.proxy->AddView(cameras[i], masks[i]);
+  }
+
+  // Views in parallel: each is independent, and the tree is built before (tree() is lazy).
+  std::vector<PatchesSeen> SeenByEveryView(const std::vector<SurfacePatch>& patches) const {
+    std::vector<PatchesSeen> seen(result.views.size());
+    result.proxy->tree();
+    tbb::parallel_for(size_t{0}, seen.size(), [&](size_t v) {
+      seen[v] =
+          PatchesSeenBy(*result.proxy, patches, result.views[v].view.camera, options.visibility);
+    });
+    return seen;
+  }
+
+  void ActiveVision() {
+    SphereSearch search;
+    search.radius = std::accumulate(distances.begin(), distances.end(), 0.0) / distances.size();
+    search.ring_step = options.sphere_step_deg * kDegree;
+    search.rings = options.sphere_rings;
+    // Wall clock for the report only: planning, not capturing (no decision depends on it).
+    double planning = 0;
+    int chosen = 0;
+    while (static_cast<int>(result.views.size()) < options.max_views) {
+      auto round_start = std::chrono::steady_clock::now();
+      const std::vector<SurfacePatch> patches = ProxySurfacePatches(*result.proxy, options.patches);
+      PatchViewCounts counts;
+      for (const PatchesSeen& seen : SeenByEveryView(patches)) AddView(seen, &counts);
+      std::vector<double> scores = PatchScores(counts, options.visibility);
+      // Worst first; ties by patch order.
+      std::vector<size_t> order(patches.size());
+      std::iota(order.begin(), order.end(), 0);
+      std::stable_sort(order.begin(), order.end(),
+                       [&](size_t a, size_t b) { return scores[a] < scores[b]; });
+      bool captured = false;
+      for (const size_t p : order) {
+        if (static_cast<int>(result.views.size()) >= options.max_views) break;
+        if (scores[p] >= 1) break;
+        const auto start = std::chrono::steady_clock::now();
+        // Rank a candidate by the failing patches it would see (the paper takes the first).
+        const auto rank = [&](const CellView& view) {
+          int seen = 0;
+          for (size_t q = 0; q < patches.size(); ++q) {
+            if (scores[q] >= 1) continue;
+            seen += SeenFraction(*result.proxy, patches[q], view.camera, options.visibility) >=
+                    options.visibility.min_seen_fraction;
+          }
+          return static_cast<double>(seen);
+        };
+        const SphereSearchResult found =
+            SearchViewSphere(cell, *result.proxy, patches[p], search, joints, options.reach,
+                             options.visibility, options.rank_candidates ? rank : ViewRank());
+        result.iteration_seconds.push_back(
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        if (!found.view) continue;
+        planning +=
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - round_start).count();
+        const double before = scores[p];
+        const Eigen::Vector3d& c = patches[p].centre;
+        PlannedView planned{
+            *found.view, "active",
+            fmt::format("patch {} at ({:.3f}, {:.3f}, {:.3f}) m scored {:.2f}; "
+                        "view sphere ring {} after {} candidates",
+                        p, c.x(), c.y(), c.z(), before, found.ring, found.candidates),
+            static_cast<int>(p), before};
+        if (!Take(std::move(planned))) continue;
+        captured = true;
+        ++chosen;
+        round_start = std::chrono::steady_clock::now();
+        // Re-score this round's patches with the new view before the next failing one.
+        AddView(PatchesSeenBy(*result.proxy, patches, result.views.back().view.camera,
+                              options.visibility),
+                &counts);
+        scores = PatchScores(counts, options.visibility);
+      }
+      if (!captured) break;
+    }
+    result.planning_seconds_per_view = chosen > 0 ? planning / chosen : 0;
+  }
+
+  void RemoveRedundantAndRefine() {
+    const std::vector<SurfacePatch> patches = ProxySurfacePatches(*result.proxy, options.patches);
+    const std::vector<PatchesSeen> seen = SeenByEveryView(patches);
+    std::vector<bool> keep(seen.size(), true);
+    if (options.remove_redundant) keep = KeepNonRedundant(seen, options.visibility);
+    PatchViewCounts counts;
+    for (size_t v = 0; v < seen.size(); ++v) {
+      result.views[v].kept = keep[v];
+      if (keep[v]) AddView(seen[v], &counts);
+    }
+    result.patches = static_cast<int>(patches.size());
+    result.patch_scores = PatchScores(counts, options.visibility);
+    result.failing_patches = static_cast<int>(std::count_if(
+        result.patch_scores.begin(), result.patch_scores.end(), [](double s) { return s < 1; }));
+    // The proxy from the kept views only, then at the final resolution (line 25).
+    ppr::PlantProxy refined(result.proxy->box(), options.proxy);
+    for (size_t v = 0; v < seen.size(); ++v) {
+      if (keep[v]) refined.AddView(result.views[v].view.camera, masks[v]);
+    }
+    refined.IncreaseResolution();
+    result.proxy = std::move(refined);
+  }
+};
+
+}  // namespace
+
+size_t ActiveVisionResult::KeptCount() const {
+  return static_cast<size_t>(
+      std::count_if(views.begin(), views.end(), [](const PlannedView& v) { return v.kept; }));
+}
+
+ActiveVisionResult RunActiveVision(const sim::CellTruth& cell, const CaptureFunction& capture,
+                                   const ActiveVisionOptions& options) {
+  if (options.levels < 1 || options.levels > static_cast<int>(options.elevations_deg.size())) {
+    throw std::invalid_argument(fmt::format("active vision: {} heights but {} elevations given",
+                                            options.levels, options.elevations_deg.size()));
+  }
+  Run run{cell, capture, options, {}, {}, sim::StartJoints(cell), {}};
+  for (int level = 0; level < options.levels; ++level) run.InitialLevel(level);
+  run.ActiveVision();
+  run.RemoveRedundantAndRefine();
+  run.result.framed_distances = run.distances;
+  return std::move(run.result);
+}
+
+}  // namespace avc::planner

@@ -1,0 +1,44 @@
+#pragma once
+
+// A view of the plant realised in the cell: the camera wanted at a point of the plant (world)
+// frame looking at a target becomes a turntable angle and arm joints. The turntable turns the
+// plant so that the view faces the arm (the arm reaches best near its own azimuth), so any view
+// direction around the plant is allowed; the arm only has to reach the view's elevation and
+// distance. The result is checked against the cell's limits: inverse kinematics inside the joint
+// limits, the camera above the turntable top and outside the plant's box by a margin.
+
+#include <Eigen/Geometry>
+#include <optional>
+#include <vector>
+
+#include "core/camera/pinhole_camera.h"
+#include "core/kinematics/dh_parameters.h"
+#include "sim/cell/cell_truth.h"
+
+namespace avc::planner {
+
+struct CellView {
+  double turntable_angle = 0;  // radians
+  kinematics::JointVector joints = kinematics::JointVector::Zero();
+  camera::Camera camera;  // world (plant) frame
+  Eigen::Vector3d centre_world = Eigen::Vector3d::Zero();
+};
+
+struct ReachOptions {
+  // The camera centre stays this far above the turntable top (world z = 0), metres.
+  double table_clearance = 0.05;
+  // ... and this far outside `keep_out` (the plant's box), metres.
+  double plant_clearance = 0.05;
+  // Azimuths tried around the arm's own when it cannot reach a view there, radians.
+  std::vector<double> azimuth_offsets = {0, 0.5236, -0.5236, 1.0472, -1.0472};
+};
+
+// nullopt when no turntable angle lets the arm reach the view within the limits above. Throws
+// std::invalid_argument for non-finite points or an eye on the target.
+std::optional<CellView> RealiseView(const sim::CellTruth& cell, const Eigen::Vector3d& eye_world,
+                                    const Eigen::Vector3d& target_world,
+                                    const Eigen::AlignedBox3d& keep_out,
+                                    const kinematics::JointVector& current,
+                                    const ReachOptions& options = {});
+
+}  // namespace avc::planner

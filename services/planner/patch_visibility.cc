@@ -1,0 +1,79 @@
+#include "services/planner/patch_visibility.h"
+
+#include <octomap/OcTree.h>
+
+#include <cmath>
+
+namespace avc::planner {
+namespace {
+
+// Whether `camera` (centre `eye`) sees a point whose surface normal is `normal` (either side),
+// unoccluded up to `stop_short` before it.
+bool Sees(const ppr::PlantProxy& proxy, const camera::Camera& camera, const Eigen::Vector3d& eye,
+          const Eigen::Vector3d& point, const Eigen::Vector3d& normal, double stop_short,
+          double cos_limit) {
+  const auto pixel = camera.Project(point);
+  if (!pixel) return false;
+  const camera::Intrinsics& k = camera.intrinsics;
+  if (pixel->x() < 0 || pixel->y() < 0 || pixel->x() > k.width - 1 || pixel->y() > k.height - 1) {
+    return false;
+  }
+  const Eigen::Vector3d to_eye = eye - point;
+  const double distance = to_eye.norm();
+  if (std::abs(normal.dot(to_eye)) < cos_limit * distance) return false;
+  const double range = distance - stop_short;
+  if (range <= 0) return true;
+  // castRay walks the tree from the eye; unknown space does not block (ignoreUnknown).
+  const Eigen::Vector3d direction = -to_eye / distance;
+  octomap::point3d hit;
+  return !proxy.tree().castRay(
+      octomap::point3d(static_cast<float>(eye.x()), static_cast<float>(eye.y()),
+                       static_cast<float>(eye.z())),
+      octomap::point3d(static_cast<float>(direction.x()), static_cast<float>(direction.y()),
+                       static_cast<float>(direction.z())),
+      hit, true, range);
+}
+
+}  // namespace
+
+double SeenFraction(const ppr::PlantProxy& proxy, const SurfacePatch& patch,
+                    const camera::Camera& camera, const VisibilityOptions& options) {
+  if (patch.points.empty()) return 0;
+  // Stop the ray before the face's own voxel: a face on the far side of a one-voxel leaf is the
+  // leaf's other side, seen through it.
+  const double stop_short = 1.01 * proxy.voxel_size();
+  const double cos_limit = std::cos(options.max_grazing_deg * M_PI / 180);
+  const Eigen::Vector3d eye = camera.T_cam_world.inverse().translation();
+  size_t seen = 0;
+  for (const Eigen::Vector3d& point : patch.points) {
+    seen += Sees(proxy, camera, eye, point, patch.normal, stop_short, cos_limit);
+  }
+  return static_cast<double>(seen) / patch.points.size();
+}
+
+PatchesSeen PatchesSeenBy(const ppr::PlantProxy& proxy, const std::vector<SurfacePatch>& patches,
+                          const camera::Camera& camera, const VisibilityOptions& options) {
+  PatchesSeen seen(patches.size());
+  for (size_t p = 0; p < patches.size(); ++p) {
+    seen[p] = SeenFraction(proxy, patches[p], camera, options) >= options.min_seen_fraction;
+  }
+  return seen;
+}
+
+void AddView(const PatchesSeen& seen, PatchViewCounts* counts) {
+  if (counts->size() != seen.size()) counts->assign(seen.size(), 0);
+  for (size_t p = 0; p < seen.size(); ++p) (*counts)[p] += seen[p];
+}
+
+void RemoveView(const PatchesSeen& seen, PatchViewCounts* counts) {
+  for (size_t p = 0; p < seen.size() && p < counts->size(); ++p) (*counts)[p] -= seen[p];
+}
+
+std::vector<double> PatchScores(const PatchViewCounts& counts, const VisibilityOptions& options) {
+  std::vector<double> scores;
+  scores.reserve(counts.size());
+  for (const uint16_t n : counts) scores.push_back(static_cast<double>(n) / options.min_views);
+  return scores;
+}
+
+}  // namespace avc::planner

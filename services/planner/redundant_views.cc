@@ -1,0 +1,63 @@
+#include "services/planner/redundant_views.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace avc::planner {
+namespace {
+
+// Patches this view keeps at the threshold: seen by it and by exactly min_views views in all.
+size_t CriticalPatches(const PatchesSeen& seen, const PatchViewCounts& counts, int min_views) {
+  size_t critical = 0;
+  for (size_t p = 0; p < seen.size(); ++p) critical += seen[p] && counts[p] == min_views;
+  return critical;
+}
+
+bool ScoresHold(const PatchViewCounts& counts, const std::vector<double>& floor,
+                const VisibilityOptions& options) {
+  const std::vector<double> scores = PatchScores(counts, options);
+  for (size_t p = 0; p < scores.size(); ++p) {
+    if (scores[p] < floor[p] - 1e-12) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::vector<bool> KeepNonRedundant(const std::vector<PatchesSeen>& seen,
+                                   const VisibilityOptions& options,
+                                   const std::vector<bool>& protected_views) {
+  std::vector<bool> keep(seen.size(), true);
+  if (seen.empty()) return keep;
+  PatchViewCounts counts;
+  for (const PatchesSeen& view : seen) AddView(view, &counts);
+  std::vector<double> floor = PatchScores(counts, options);
+  for (double& score : floor) score = std::min(1.0, score);
+
+  std::vector<bool> tried(seen.size(), false);
+  while (true) {
+    // The least useful view not yet tried.
+    size_t best = seen.size();
+    size_t best_critical = std::numeric_limits<size_t>::max();
+    for (size_t v = seen.size(); v-- > 0;) {
+      if (!keep[v] || tried[v] || (v < protected_views.size() && protected_views[v])) continue;
+      const size_t critical = CriticalPatches(seen[v], counts, options.min_views);
+      if (critical < best_critical) {
+        best = v;
+        best_critical = critical;
+      }
+    }
+    if (best == seen.size()) break;
+    tried[best] = true;
+    RemoveView(seen[best], &counts);
+    // A view that cannot go now never can: later removals only lower the counts.
+    if (ScoresHold(counts, floor, options)) {
+      keep[best] = false;
+    } else {
+      AddView(seen[best], &counts);
+    }
+  }
+  return keep;
+}
+
+}  // namespace avc::planner

@@ -1,0 +1,151 @@
+// Algorithm 1 end to end in the simulated cell, without the bus: captures are rendered label
+// images (a perfect colour filter) at a quarter of the camera's size. The run frames the plant,
+// takes the 3x10 orbit, adds views for badly seen patches with their reasons, removes redundant
+// ones without losing ground-truth coverage, and is deterministic; a plant the colour filter
+// cannot find, or captures that fail, are reported rather than crashing.
+
+#include "services/planner/active_vision.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <opencv2/imgproc.hpp>
+
+#include "core/eval/coverage.h"
+#include "core/geometry/mesh.h"
+#include "sim/dataset/render_dataset.h"
+#include "sim/render/renderer.h"
+
+namespace avc::planner {
+namespace {
+
+struct Plant {
+  sim::Scene scene;
+  sim::CellTruth cell;
+  Plant() {
+    sim::RenderDatasetOptions options;
+    options.preset = sim::PlantPreset::kBroadleaf;
+    scene = sim::MakeScene(options);
+    cell = sim::MakeCell(options);
+  }
+};
+
+const Plant& TestPlant() {
+  static const Plant plant;
+  return plant;
+}
+
+// Renders the organ labels at a quarter size; plant = stem, petiole or leaf.
+std::optional<cv::Mat> LabelCapture(const sim::Scene& scene, const CellView& view) {
+  camera::Camera small = view.camera;
+  camera::Intrinsics& k = small.intrinsics;
+  const cv::Size full(k.width, k.height);
+  k.width /= 4;
+  k.height /= 4;
+  k.fx /= 4;
+  k.fy /= 4;
+  k.cx = (k.cx + 0.5) / 4 - 0.5;
+  k.cy = (k.cy + 0.5) / 4 - 0.5;
+  sim::RenderOptions options;
+  options.samples_per_pixel_axis = 1;
+  const sim::RenderResult frame = sim::Render(scene, small, options);
+  cv::Mat mask = (frame.labels >= geometry::labels::kStem);
+  cv::Mat resized;
+  cv::resize(mask, resized, full, 0, 0, cv::INTER_NEAREST);
+  return resized;
+}
+
+ActiveVisionOptions SmallRun() {
+  ActiveVisionOptions options;
+  options.max_views = 34;
+  return options;
+}
+
+TEST(ActiveVision, FramesOrbitsAddsViewsAndPrunesWithoutLosingCoverage) {
+  const Plant& plant = TestPlant();
+  const auto capture = [&](const CellView& view) { return LabelCapture(plant.scene, view); };
+  const ActiveVisionResult result = RunActiveVision(plant.cell, capture, SmallRun());
+
+  const size_t initial = std::count_if(result.views.begin(), result.views.end(),
+                                       [](const PlannedView& v) { return v.phase == "initial"; });
+  EXPECT_EQ(initial, 30u);
+  EXPECT_LE(result.views.size(), 34u);
+  EXPECT_GT(result.views.size(), initial) << "no active view was needed or found";
+  EXPECT_LE(result.KeptCount(), result.views.size());
+  for (const PlannedView& v : result.views) {
+    if (v.phase != "active") continue;
+    EXPECT_GE(v.patch, 0);
+    EXPECT_NE(v.reason.find("patch"), std::string::npos) << v.reason;
+    EXPECT_LT(v.patch_score, 1.0);
+  }
+  ASSERT_TRUE(result.proxy.has_value());
+  EXPECT_GT(result.proxy->Counts().occupied, 1000u);
+  ASSERT_EQ(result.framed_distances.size(), 3u);
+  for (const double d : result.framed_distances) {
+    EXPECT_GT(d, 0.2);
+    EXPECT_LT(d, 1.2);
+  }
+
+  // Ground truth: the kept views cover at least what the orbit alone does.
+  geometry::Mesh organs;
+  organs.vertices = plant.scene.mesh.vertices;
+  for (size_t f = 0; f < plant.scene.mesh.faces.size(); ++f) {
+    if (plant.scene.mesh.face_labels[f] >= geometry::labels::kStem) {
+      organs.faces.push_back(plant.scene.mesh.faces[f]);
+    }
+  }
+  const eval::CoverageModel model(organs, 1e5, 1);
+  std::vector<camera::Camera> kept, orbit;
+  for (const PlannedView& v : result.views) {
+    if (v.kept) kept.push_back(v.view.camera);
+    if (v.phase == "initial") orbit.push_back(v.view.camera);
+  }
+  const double kept_coverage = model.Evaluate(kept).fraction;
+  const double orbit_coverage = model.Evaluate(orbit).fraction;
+  EXPECT_GT(orbit_coverage, 0.9);
+  EXPECT_GE(kept_coverage, orbit_coverage - 0.005)
+      << "kept " << kept.size() << " views: " << kept_coverage << ", orbit " << orbit_coverage;
+
+  // Same plant and captures, same plan.
+  const ActiveVisionResult again = RunActiveVision(plant.cell, capture, SmallRun());
+  ASSERT_EQ(again.views.size(), result.views.size());
+  for (size_t i = 0; i < result.views.size(); ++i) {
+    EXPECT_EQ(again.views[i].view.turntable_angle, result.views[i].view.turntable_angle) << i;
+    EXPECT_EQ(again.views[i].view.joints, result.views[i].view.joints) << i;
+    EXPECT_EQ(again.views[i].kept, result.views[i].kept) << i;
+  }
+}
+
+TEST(ActiveVision, NoPlantAndFailedCapturesAreReported) {
+  const Plant& plant = TestPlant();
+  const auto nothing = [](const CellView& view) {
+    return std::optional<cv::Mat>(
+        cv::Mat::zeros(view.camera.intrinsics.height, view.camera.intrinsics.width, CV_8UC1));
+  };
+  try {
+    RunActiveVision(plant.cell, nothing, SmallRun());
+    ADD_FAILURE() << "an empty scene must stop the run";
+  } catch (const std::runtime_error& error) {
+    EXPECT_NE(std::string(error.what()).find("no plant found"), std::string::npos) << error.what();
+  }
+
+  // Every fifth capture fails: those views are skipped and named, the run completes.
+  int calls = 0;
+  const auto flaky = [&](const CellView& view) -> std::optional<cv::Mat> {
+    if (++calls % 5 == 0) return std::nullopt;
+    return LabelCapture(plant.scene, view);
+  };
+  ActiveVisionOptions options = SmallRun();
+  options.max_views = 30;
+  const ActiveVisionResult result = RunActiveVision(plant.cell, flaky, options);
+  const size_t initial = std::count_if(result.views.begin(), result.views.end(),
+                                       [](const PlannedView& v) { return v.phase == "initial"; });
+  EXPECT_LT(initial, 30u);              // the failed ones are missing ...
+  EXPECT_LE(result.views.size(), 30u);  // ... and the budget still holds
+  EXPECT_TRUE(std::any_of(result.notes.begin(), result.notes.end(), [](const std::string& n) {
+    return n.find("capture failed") != std::string::npos;
+  }));
+}
+
+}  // namespace
+}  // namespace avc::planner

@@ -1,0 +1,58 @@
+// Views realised in the nominal cell: the camera lands where it was asked, looking at the target,
+// on the turntable angle that faces the arm; views the arm cannot reach, below the table or in
+// the plant's box are refused, and bad input throws.
+
+#include "services/planner/cell_view.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "sim/cell/view_selection.h"
+
+namespace avc::planner {
+namespace {
+
+const Eigen::Vector3d kAim(0, 0, 0.12);
+
+Eigen::Vector3d Eye(double distance, double elevation_deg, double azimuth_deg) {
+  const double e = elevation_deg * M_PI / 180;
+  const double a = azimuth_deg * M_PI / 180;
+  return kAim + distance * Eigen::Vector3d(std::cos(e) * std::cos(a), std::cos(e) * std::sin(a),
+                                           std::sin(e));
+}
+
+TEST(RealiseView, TheCameraIsWhereAskedAndLooksAtTheTarget) {
+  const sim::CellTruth cell = sim::NominalCell();
+  kinematics::JointVector joints = sim::StartJoints(cell);
+  for (const double azimuth : {0.0, 90.0, 200.0, 315.0}) {
+    for (const double elevation : {15.0, 45.0}) {
+      const auto view = RealiseView(cell, Eye(0.45, elevation, azimuth), kAim, {}, joints);
+      ASSERT_TRUE(view.has_value()) << "azimuth " << azimuth << " elevation " << elevation;
+      EXPECT_LT((view->centre_world - Eye(0.45, elevation, azimuth)).norm(), 1e-6);
+      const auto pixel = view->camera.Project(kAim);
+      ASSERT_TRUE(pixel.has_value());
+      const camera::Intrinsics& k = view->camera.intrinsics;
+      // The optical axis passes through the target: it images at the principal point.
+      EXPECT_NEAR(pixel->x(), k.cx, 1.0);
+      EXPECT_NEAR(pixel->y(), k.cy, 1.0);
+      joints = view->joints;
+    }
+  }
+}
+
+TEST(RealiseView, RefusesWhatTheCellCannotDo) {
+  const sim::CellTruth cell = sim::NominalCell();
+  const kinematics::JointVector joints = sim::StartJoints(cell);
+  EXPECT_FALSE(RealiseView(cell, Eye(3.0, 30, 0), kAim, {}, joints).has_value());   // out of reach
+  EXPECT_FALSE(RealiseView(cell, Eye(0.4, -30, 0), kAim, {}, joints).has_value());  // under table
+  const Eigen::AlignedBox3d plant(Eigen::Vector3d(-0.1, -0.1, 0), Eigen::Vector3d(0.1, 0.1, 0.3));
+  EXPECT_FALSE(RealiseView(cell, Eye(0.12, 10, 0), kAim, plant, joints).has_value());  // inside
+  EXPECT_THROW(RealiseView(cell, Eigen::Vector3d(NAN, 0, 0), kAim, {}, joints),
+               std::invalid_argument);
+  EXPECT_THROW(RealiseView(cell, kAim, kAim, {}, joints), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace avc::planner
