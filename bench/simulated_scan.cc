@@ -1,15 +1,14 @@
 #include "bench/simulated_scan.h"
 
 #include <iostream>
-#include <stdexcept>
 
 #include "bench/mvs/isolated_run.h"
 #include "sim/dataset/render_dataset.h"
 
 namespace avc::bench {
 
-std::filesystem::path EnsureSimulatedScan(const std::filesystem::path& work,
-                                          const std::string& preset) {
+std::optional<std::filesystem::path> EnsureSimulatedScan(const std::filesystem::path& work,
+                                                         const std::string& preset) {
   const std::filesystem::path scan = work / preset;
   if (std::filesystem::exists(scan / "cameras.json")) return scan;
   std::cerr << "rendering " << preset << " (30 views, 1280x960)\n";
@@ -24,7 +23,8 @@ std::filesystem::path EnsureSimulatedScan(const std::filesystem::path& work,
     return nlohmann::json::object();
   });
   if (!rendered.ok) {
-    throw std::runtime_error("rendering the " + preset + " scan failed: " + rendered.error);
+    std::cerr << "  rendering the " << preset << " scan failed: " << rendered.error << "\n";
+    return std::nullopt;
   }
   return scan;
 }

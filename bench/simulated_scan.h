@@ -5,14 +5,15 @@
 // benchmarks (or runs) can share them.
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 namespace avc::bench {
 
 // work / preset, rendered there first (in a child process, so that the renderer's threads never
-// run in the benchmark's process) unless it already holds a scan. Throws std::runtime_error
-// naming the preset when rendering fails.
-std::filesystem::path EnsureSimulatedScan(const std::filesystem::path& work,
-                                          const std::string& preset);
+// run in the benchmark's process) unless it already holds a scan. nullopt, after saying why on
+// stderr, when rendering fails.
+std::optional<std::filesystem::path> EnsureSimulatedScan(const std::filesystem::path& work,
+                                                         const std::string& preset);
 
 }  // namespace avc::bench

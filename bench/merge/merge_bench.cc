@@ -95,14 +95,12 @@ int RunMergeBenchmark(const std::vector<std::string>& arguments) {
   std::vector<Row> rows;
   bool failed = false;
   for (const std::string& preset : presets) {
-    fs::path scan;
-    try {
-      scan = EnsureSimulatedScan(work, preset);
-    } catch (const std::runtime_error& e) {
-      std::cerr << "  " << e.what() << "\n";
+    const std::optional<fs::path> rendered = EnsureSimulatedScan(work, preset);
+    if (!rendered) {
       failed = true;
       continue;
     }
+    const fs::path& scan = *rendered;
     std::vector<RawSource> sources = {RawSource::kSimulated};
     if (with_mvs) sources.push_back(RawSource::kPatchMvs);
     for (RawSource source : sources) {

@@ -259,13 +259,11 @@ int RunMvsBenchmark(const std::vector<std::string>& arguments) {
   std::vector<Row> scaling_rows;
   std::vector<PprRow> ppr_rows;
   for (const std::string& preset : presets) {
-    fs::path scan;
-    try {
-      scan = EnsureSimulatedScan(work, preset);
-    } catch (const std::runtime_error& e) {
-      std::cerr << "  " << e.what() << "\n";
+    const std::optional<fs::path> rendered = EnsureSimulatedScan(work, preset);
+    if (!rendered) {
       continue;
     }
+    const fs::path& scan = *rendered;
     ppr_rows.push_back(RunPprRow({preset, scan, 0.002}, repeats));
     if (proxy_only) continue;
     for (builder::MvsMethod method :

@@ -107,6 +107,13 @@ nlohmann::json RunNbvCase(const NbvCase& nbv_case) {
       Cameras(planner::TwoStaticCameraViews(cell, frame, 10 * kDegree, 60 * kDegree, n))));
   methods.push_back(MethodJson(fmt::format("random reachable ({})", n), model,
                                Cameras(planner::RandomViews(cell, frame, n, nbv_case.seed))));
+  // The ceiling: every reachable view of a dense sphere (5 to 85 degrees in 10 degree steps).
+  std::vector<double> dense_elevations;
+  for (int e = 5; e <= 85; e += 10) dense_elevations.push_back(e * kDegree);
+  const std::vector<planner::CellView> sphere =
+      planner::SphereViews(cell, frame, dense_elevations, 24);
+  methods.push_back(MethodJson(fmt::format("all sphere views ({}, ceiling)", sphere.size()), model,
+                               Cameras(sphere)));
   // At our image count, on the proxy box our run found.
   const int ours_count = static_cast<int>(kept.size());
   methods.push_back(

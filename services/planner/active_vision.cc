@@ -26,6 +26,13 @@ Eigen::Vector3d EyeAt(const Eigen::Vector3d& aim, double distance, double elevat
                                           std::sin(elevation));
 }
 
+bool InImage(const camera::Camera& camera, const Eigen::Vector3d& point) {
+  const auto pixel = camera.Project(point);
+  const camera::Intrinsics& k = camera.intrinsics;
+  return pixel && pixel->x() >= 0 && pixel->y() >= 0 && pixel->x() <= k.width - 1 &&
+         pixel->y() <= k.height - 1;
+}
+
 // What Algorithm 1 keeps while it runs: the views with their masks, the proxy, the joints.
 struct Run {
   const sim::CellTruth& cell;
@@ -150,7 +157,8 @@ struct Run {
         const auto rank = [&](const CellView& view) {
           int seen = 0;
           for (size_t q = 0; q < patches.size(); ++q) {
-            if (scores[q] >= 1) continue;
+            // Cheap tests first: a passing patch, or one whose centre is not in the image.
+            if (scores[q] >= 1 || !InImage(view.camera, patches[q].centre)) continue;
             seen += SeenFraction(*result.proxy, patches[q], view.camera, options.visibility) >=
                     options.visibility.min_seen_fraction;
           }

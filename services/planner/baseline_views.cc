@@ -46,6 +46,21 @@ std::vector<CellView> TwoStaticCameraViews(const sim::CellTruth& cell, const Bas
   return views;
 }
 
+std::vector<CellView> SphereViews(const sim::CellTruth& cell, const BaselineFrame& frame,
+                                  const std::vector<double>& elevations, int azimuths) {
+  std::vector<CellView> views;
+  const kinematics::JointVector start = sim::StartJoints(cell);
+  for (const double elevation : elevations) {
+    for (int a = 0; a < azimuths; ++a) {
+      const double azimuth = 2 * M_PI * a / azimuths;
+      const auto view =
+          RealiseView(cell, Eye(frame, frame.distance, elevation, azimuth), frame.aim, {}, start);
+      if (view) views.push_back(*view);
+    }
+  }
+  return views;
+}
+
 std::vector<CellView> RandomViews(const sim::CellTruth& cell, const BaselineFrame& frame, int count,
                                   uint64_t seed) {
   sim::DeterministicRandom random(seed);

@@ -26,6 +26,12 @@ std::vector<CellView> StaticCameraViews(const sim::CellTruth& cell, const Baseli
 std::vector<CellView> TwoStaticCameraViews(const sim::CellTruth& cell, const BaselineFrame& frame,
                                            double low, double high, int count);
 
+// Views on elevation rings x `azimuths` equal steps, each realised from the start joints (the
+// branch the arm returns to between views); the unreachable ones are left out. With many
+// views, their coverage is the ceiling any selection from the sphere can reach.
+std::vector<CellView> SphereViews(const sim::CellTruth& cell, const BaselineFrame& frame,
+                                  const std::vector<double>& elevations, int azimuths);
+
 // Views at uniformly random directions above 5 degrees and below 75 degrees elevation, at
 // 0.9-1.1 times the distance; unreachable draws are skipped (at most 50 draws per view).
 std::vector<CellView> RandomViews(const sim::CellTruth& cell, const BaselineFrame& frame, int count,

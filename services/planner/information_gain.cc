@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "sim/cell/view_selection.h"
+#include "services/planner/baseline_views.h"
 
 namespace avc::planner {
 namespace {
@@ -71,21 +71,10 @@ std::vector<CellView> InformationGainViews(const sim::CellTruth& cell,
                                            const Eigen::AlignedBox3d& box,
                                            const Eigen::Vector3d& aim, double distance, int count,
                                            const InformationGainOptions& options) {
-  // The reachable candidates, realised once (each from the start joints: the branch the cell
-  // returns to between views).
-  std::vector<CellView> candidates;
-  const kinematics::JointVector start = sim::StartJoints(cell);
-  for (const double elevation_deg : options.elevations_deg) {
-    const double elevation = elevation_deg * M_PI / 180;
-    for (int a = 0; a < options.azimuths; ++a) {
-      const double azimuth = 2 * M_PI * a / options.azimuths;
-      const Eigen::Vector3d eye =
-          aim + distance * Eigen::Vector3d(std::cos(elevation) * std::cos(azimuth),
-                                           std::cos(elevation) * std::sin(azimuth),
-                                           std::sin(elevation));
-      if (auto view = RealiseView(cell, eye, aim, {}, start)) candidates.push_back(*view);
-    }
-  }
+  std::vector<double> elevations;
+  for (const double degrees : options.elevations_deg) elevations.push_back(degrees * M_PI / 180);
+  const std::vector<CellView> candidates =
+      SphereViews(cell, {aim, distance}, elevations, options.azimuths);
   ppr::PlantProxy proxy(box, options.proxy);
   std::vector<CellView> chosen;
   std::vector<bool> used(candidates.size(), false);

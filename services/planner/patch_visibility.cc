@@ -2,6 +2,7 @@
 
 #include <octomap/OcTree.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace avc::planner {
@@ -44,11 +45,15 @@ double SeenFraction(const ppr::PlantProxy& proxy, const SurfacePatch& patch,
   const double stop_short = 1.01 * proxy.voxel_size();
   const double cos_limit = std::cos(options.max_grazing_deg * M_PI / 180);
   const Eigen::Vector3d eye = camera.T_cam_world.inverse().translation();
-  size_t seen = 0;
-  for (const Eigen::Vector3d& point : patch.points) {
-    seen += Sees(proxy, camera, eye, point, patch.normal, stop_short, cos_limit);
+  // An evenly strided sample of at most max_sampled_faces faces estimates the fraction well
+  // enough (+-0.1 at 32) and bounds the cost on fine proxies.
+  const size_t stride = std::max<size_t>(
+      1, (patch.points.size() + options.max_sampled_faces - 1) / options.max_sampled_faces);
+  size_t seen = 0, tried = 0;
+  for (size_t f = 0; f < patch.points.size(); f += stride, ++tried) {
+    seen += Sees(proxy, camera, eye, patch.points[f], patch.normal, stop_short, cos_limit);
   }
-  return static_cast<double>(seen) / patch.points.size();
+  return static_cast<double>(seen) / tried;
 }
 
 PatchesSeen PatchesSeenBy(const ppr::PlantProxy& proxy, const std::vector<SurfacePatch>& patches,

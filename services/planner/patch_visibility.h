@@ -22,6 +22,7 @@ struct VisibilityOptions {
   int min_views = 3;  // PMVS's gamma, as the coverage metric
   double max_grazing_deg = 75;
   double min_seen_fraction = 0.5;
+  size_t max_sampled_faces = 32;  // faces of a patch tested per view (evenly strided)
 };
 
 // Per patch: 1 when the view sees it.

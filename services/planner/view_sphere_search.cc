@@ -25,6 +25,7 @@ SphereSearchResult SearchViewSphere(const sim::CellTruth& cell, const ppr::Plant
   const auto [u, v] = TangentBasis(patch.normal);
   const Eigen::AlignedBox3d keep_out = proxy.OccupiedBounds();
   double best = 0;  // rank of result.view
+  int ranked = 0;
   for (int ring = 0; ring <= search.rings; ++ring) {
     const double theta = ring * search.ring_step;
     const int around = ring == 0 ? 1
@@ -52,6 +53,7 @@ SphereSearchResult SearchViewSphere(const sim::CellTruth& cell, const ppr::Plant
         result.ring = ring;
         best = value;
       }
+      if (++ranked >= search.max_ranked) break;
     }
     if (result.view) return result;
   }

@@ -22,6 +22,7 @@ struct SphereSearch {
   double radius = 0.5;             // metres from the patch centre
   double ring_step = 0.1745;       // radians between rings
   int rings = 9;                   // rings after the normal (9 x 10 degrees: the tangent plane)
+  int max_ranked = 8;              // acceptable candidates of a ring ranked at most
   double min_seen_fraction = 0.5;  // of the patch's faces the view must see
 };
 
