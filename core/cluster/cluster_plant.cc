@@ -15,6 +15,8 @@
 #include "core/cluster/pca.h"
 #include "core/cluster/point_grid.h"
 #include "core/cluster/reassignment.h"
+#include "core/cluster/sheet_split.h"
+#include "core/cluster/spectral_cut.h"
 
 namespace avc::cluster {
 namespace {
@@ -50,11 +52,16 @@ void CheckOptions(const ClusterOptions& o) {
           "min_normal_gain >= 0");
   Require(o.min_cluster_points >= 0 && o.refinement_rounds >= 0 && o.reassignment_rounds >= 0,
           "min_cluster_points, refinement_rounds and reassignment_rounds must be >= 0");
-  Require(o.neck_neighbours >= 1 && o.neck_lanczos_steps >= 2,
-          "neck_neighbours must be >= 1 and neck_lanczos_steps >= 2");
+  Require(o.neck_neighbours >= 1 && o.neck_lanczos_steps >= 2 && o.sheet_lanczos_steps >= 2,
+          "neck_neighbours must be >= 1, neck_lanczos_steps and sheet_lanczos_steps >= 2");
   Require(std::isfinite(o.max_neck_ratio) && o.max_neck_ratio >= 0 &&
               std::isfinite(o.neck_bend_factor) && o.neck_bend_factor >= 0,
           "max_neck_ratio and neck_bend_factor must be finite and >= 0");
+  Require(std::isfinite(o.sheet_smoothing_factor) && o.sheet_smoothing_factor >= 0 &&
+              std::isfinite(o.sheet_bend_factor) && o.sheet_bend_factor >= 0 &&
+              std::isfinite(o.max_sheet_edge_bias) && o.max_sheet_edge_bias >= 0,
+          "sheet_smoothing_factor, sheet_bend_factor and max_sheet_edge_bias must be finite and "
+          ">= 0");
 }
 
 bool IsFlat(const PrincipalAxes& axes, double noise_tolerance, double flatness_ratio) {
@@ -104,6 +111,13 @@ Assignment ClusterPlant(const PointSet& set, const ClusterOptions& options, Clus
   neck_rule.min_side = min_points;
   neck_rule.bend_factor = options.neck_bend_factor;
   neck_rule.max_neck_ratio = options.max_neck_ratio;
+  SheetRule sheet_rule;
+  sheet_rule.lanczos_steps = options.sheet_lanczos_steps;
+  sheet_rule.min_side = min_points;
+  sheet_rule.smoothing_factor = options.sheet_smoothing_factor;
+  sheet_rule.bend_factor = options.sheet_bend_factor;
+  sheet_rule.max_edge_bias = options.max_sheet_edge_bias;
+  sheet_rule.refinement_rounds = options.refinement_rounds;
   std::vector<int32_t> scratch(points.size(), -1);
   std::deque<std::vector<uint32_t>> work;
   std::vector<std::vector<uint32_t>> spurious;
@@ -152,17 +166,28 @@ Assignment ClusterPlant(const PointSet& set, const ClusterOptions& options, Clus
         continue;
       }
     }
-    const auto groups = SplitByFurthestReference(grid, points, cluster, link, &scratch);
+    const auto groups =
+        SplitByFurthestReference(neighbours, points, cluster, link_radius, &scratch);
     if (!groups.empty()) {
       ++out.separation_splits;
       for (const auto& group : groups) enqueue_components(group);
       continue;
     }
     // Touching groups that neither the normals nor a gap separate: cut at a narrow neck.
-    const NeckCut neck = SplitAtNeck(neighbours, points, &normals, cluster, neck_rule, &scratch);
+    const ClusterGraph graph =
+        NeighbourGraph(neighbours, points, cluster, options.neck_neighbours, &scratch);
+    const NeckCut neck = SplitAtNeck(graph, points, &normals, cluster, neck_rule);
     if (!neck.groups.empty()) {
       ++out.neck_splits;
       for (const auto& group : neck.groups) enqueue_components(group);
+      continue;
+    }
+    // No neck: blades that cross, cut where the normal field jumps.
+    const SheetCut sheets =
+        SplitOverlappingSheets(graph, neighbours, points, normals, cluster, sheet_rule, &scratch);
+    if (!sheets.groups.empty()) {
+      ++out.sheet_splits;
+      for (const auto& group : sheets.groups) enqueue_components(group);
       continue;
     }
     accepted.push_back(std::move(cluster));

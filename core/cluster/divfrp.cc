@@ -3,13 +3,11 @@
 #include <algorithm>
 #include <utility>
 
-#include "core/cluster/connected_components.h"
-
 namespace avc::cluster {
 
 std::vector<std::vector<uint32_t>> SplitByFurthestReference(
-    const PointGrid& grid, const std::vector<Eigen::Vector3f>& points,
-    const std::vector<uint32_t>& cluster, const LinkRule& link, std::vector<int32_t>* scratch) {
+    const NeighbourLists& neighbours, const std::vector<Eigen::Vector3f>& points,
+    const std::vector<uint32_t>& cluster, float link_radius, std::vector<int32_t>* scratch) {
   if (cluster.size() < 2) return {};
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
   for (uint32_t i : cluster) centroid += points[i].cast<double>();
@@ -37,12 +35,12 @@ std::vector<std::vector<uint32_t>> SplitByFurthestReference(
     }
   }
   std::vector<std::vector<uint32_t>> groups;
-  if (widest > link.radius) {
+  if (widest > link_radius) {
     groups.resize(2);
     for (size_t k = 0; k < order.size(); ++k) groups[k < cut ? 0 : 1].push_back(order[k].second);
   } else {
     std::vector<std::vector<uint32_t>> components =
-        ConnectedComponents(grid, points, cluster, link, scratch);
+        ConnectedComponents(neighbours, cluster, scratch);
     if (components.size() < 2) return {};
     groups.resize(2);
     for (auto& component : components) {

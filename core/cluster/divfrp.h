@@ -13,14 +13,14 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/cluster/connected_components.h"
-#include "core/cluster/point_grid.h"
+#include "core/cluster/neighbour_lists.h"
 
 namespace avc::cluster {
 
 // Two non-empty groups (each sorted ascending), or an empty vector when the cluster is one group.
+// neighbours: the same-surface neighbours within link_radius (m) of every point.
 std::vector<std::vector<uint32_t>> SplitByFurthestReference(
-    const PointGrid& grid, const std::vector<Eigen::Vector3f>& points,
-    const std::vector<uint32_t>& cluster, const LinkRule& link, std::vector<int32_t>* scratch);
+    const NeighbourLists& neighbours, const std::vector<Eigen::Vector3f>& points,
+    const std::vector<uint32_t>& cluster, float link_radius, std::vector<int32_t>* scratch);
 
 }  // namespace avc::cluster

@@ -8,6 +8,39 @@
 #include <string>
 
 namespace avc::cluster {
+namespace {
+
+// Eigenvector of the largest eigenvalue of the symmetric tridiagonal matrix with diagonal alpha
+// and off-diagonal beta: the eigenvalue alone (QR without vectors), then inverse iteration with a
+// shift just above it, solved by the Thomas algorithm (the shifted matrix is definite).
+Eigen::VectorXd TopEigenvectorOfTridiagonal(const std::vector<double>& alpha,
+                                            const std::vector<double>& beta) {
+  const long m = static_cast<long>(alpha.size());
+  Eigen::VectorXd diagonal = Eigen::Map<const Eigen::VectorXd>(alpha.data(), m);
+  Eigen::VectorXd off(std::max<long>(m - 1, 0));
+  for (long k = 0; k + 1 < m; ++k) off[k] = beta[static_cast<size_t>(k)];
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver;
+  solver.computeFromTridiagonal(diagonal, off, Eigen::EigenvaluesOnly);
+  const double scale = std::max(1.0, solver.eigenvalues().cwiseAbs().maxCoeff());
+  const double shift = solver.eigenvalues()[m - 1] + 1e-10 * scale;
+  Eigen::VectorXd x = Eigen::VectorXd::Ones(m);
+  Eigen::VectorXd c = Eigen::VectorXd::Zero(m);
+  Eigen::VectorXd d = Eigen::VectorXd::Zero(m);
+  for (int iteration = 0; iteration < 3; ++iteration) {
+    // Solve (T - shift I) y = x.
+    for (long k = 0; k < m; ++k) {
+      const double a = k > 0 ? off[k - 1] : 0.0;
+      const double pivot = (diagonal[k] - shift) - (k > 0 ? a * c[k - 1] : 0.0);
+      c[k] = k + 1 < m ? off[k] / pivot : 0.0;
+      d[k] = (x[k] - (k > 0 ? a * d[k - 1] : 0.0)) / pivot;
+    }
+    for (long k = m - 2; k >= 0; --k) d[k] -= c[k] * d[k + 1];
+    x = d.normalized();
+  }
+  return x;
+}
+
+}  // namespace
 
 std::vector<double> FiedlerVector(const SparseGraph& graph, const std::vector<double>& start,
                                   int lanczos_steps) {
@@ -17,8 +50,9 @@ std::vector<double> FiedlerVector(const SparseGraph& graph, const std::vector<do
                                 " values for " + std::to_string(n) + " vertices");
   }
   if (n < 3) return std::vector<double>(n, 0.0);
-  Eigen::VectorXd inv_sqrt_degree(n);
-  Eigen::VectorXd top(n);  // the known top eigenvector of the normalised adjacency
+  Eigen::VectorXd inv_sqrt_degree = Eigen::VectorXd::Zero(n);
+  Eigen::VectorXd top =
+      Eigen::VectorXd::Zero(n);  // the known top eigenvector of the normalised adjacency
   for (size_t v = 0; v < n; ++v) {
     double degree = 0.0;
     for (uint32_t e = graph.offset[v]; e < graph.offset[v + 1]; ++e) degree += graph.weight[e];
@@ -29,13 +63,20 @@ std::vector<double> FiedlerVector(const SparseGraph& graph, const std::vector<do
     top[v] = std::sqrt(degree);
   }
   top.normalize();
+  // D^-1/2 W D^-1/2 entries, once: each product is then one multiply-add per edge.
+  std::vector<double> normalised(graph.weight.size());
+  for (size_t v = 0; v < n; ++v) {
+    for (uint32_t e = graph.offset[v]; e < graph.offset[v + 1]; ++e) {
+      normalised[e] = graph.weight[e] * inv_sqrt_degree[v] * inv_sqrt_degree[graph.column[e]];
+    }
+  }
   auto multiply = [&](const Eigen::VectorXd& x, Eigen::VectorXd* y) {
     for (size_t v = 0; v < n; ++v) {
       double sum = 0.0;
       for (uint32_t e = graph.offset[v]; e < graph.offset[v + 1]; ++e) {
-        sum += graph.weight[e] * inv_sqrt_degree[graph.column[e]] * x[graph.column[e]];
+        sum += normalised[e] * x[graph.column[e]];
       }
-      (*y)[v] = inv_sqrt_degree[v] * sum;
+      (*y)[v] = sum;
     }
   };
 
@@ -52,25 +93,19 @@ std::vector<double> FiedlerVector(const SparseGraph& graph, const std::vector<do
     basis.col(k) = q;
     multiply(q, &w);
     alpha.push_back(q.dot(w));
-    // Full reorthogonalisation (one Gram-Schmidt pass, against the top vector too) keeps the
-    // Ritz values clean; a second pass changed no Table 2 result.
+    // Full reorthogonalisation (one classical Gram-Schmidt pass: two matrix-vector products,
+    // against the top vector too) keeps the Ritz values clean; a second pass changed no Table 2
+    // result.
     w -= top.dot(w) * top;
-    for (int j = 0; j <= k; ++j) w -= basis.col(j).dot(w) * basis.col(j);
+    const auto done = basis.leftCols(k + 1);
+    w -= done * (done.transpose() * w);
     const double norm = w.norm();
     if (k + 1 == steps || norm < 1e-10) break;
     beta.push_back(norm);
     q = w / norm;
   }
-  const int m = static_cast<int>(alpha.size());
-  Eigen::MatrixXd tridiagonal = Eigen::MatrixXd::Zero(m, m);
-  for (int k = 0; k < m; ++k) {
-    tridiagonal(k, k) = alpha[static_cast<size_t>(k)];
-    if (k + 1 < m) {
-      tridiagonal(k, k + 1) = tridiagonal(k + 1, k) = beta[static_cast<size_t>(k)];
-    }
-  }
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(tridiagonal);
-  const Eigen::VectorXd ritz = basis.leftCols(m) * solver.eigenvectors().col(m - 1);
+  const Eigen::VectorXd ritz =
+      basis.leftCols(static_cast<long>(alpha.size())) * TopEigenvectorOfTridiagonal(alpha, beta);
   std::vector<double> fiedler(n);
   // Fix the sign (the first vertex non-positive) so the result does not depend on the solver.
   const double sign = ritz[0] > 0.0 ? -1.0 : 1.0;

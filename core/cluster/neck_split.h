@@ -14,8 +14,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/cluster/connected_components.h"
-#include "core/cluster/neighbour_lists.h"
+#include "core/cluster/spectral_cut.h"
 
 namespace avc::cluster {
 
@@ -37,11 +36,10 @@ struct NeckCut {
   double ratio = 0;  // neck ratio of the least-conductance cut (infinity: no cut allowed)
 };
 
-// neighbours built from points with link; normals weight the edges (nullptr: unweighted).
-// scratch must hold one int per point and all -1; it is restored before returning.
-NeckCut SplitAtNeck(const NeighbourLists& neighbours, const std::vector<Eigen::Vector3f>& points,
+// graph: the cluster's neighbour graph (spectral_cut.h, NeighbourGraph with rule.neighbours);
+// normals weight the edges (nullptr: unweighted).
+NeckCut SplitAtNeck(const ClusterGraph& graph, const std::vector<Eigen::Vector3f>& points,
                     const std::vector<Eigen::Vector3f>* normals,
-                    const std::vector<uint32_t>& cluster, const NeckRule& rule,
-                    std::vector<int32_t>* scratch);
+                    const std::vector<uint32_t>& cluster, const NeckRule& rule);
 
 }  // namespace avc::cluster

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 
 #include "core/cluster/pca.h"
@@ -9,50 +10,87 @@
 
 namespace avc::cluster {
 
+namespace {
+
+// The points of one cluster around a query point.
+struct LocalPart {
+  int32_t cluster = kUnassigned;
+  std::vector<uint32_t> members;
+};
+
+// Distance of p to the part's regression plane and |n . plane normal|; a part of fewer than 3
+// points has no plane (infinitely far, not aligned).
+struct LocalFit {
+  double plane_distance = std::numeric_limits<double>::infinity();
+  double alignment = 0.0;
+};
+
+LocalFit FitLocally(const std::vector<Eigen::Vector3f>& points, const std::vector<uint32_t>& part,
+                    const Eigen::Vector3d& p, const Eigen::Vector3d& n) {
+  LocalFit fit;
+  if (part.size() < 3) return fit;
+  const PrincipalAxes axes = FitPrincipalAxes(points, part);
+  fit.plane_distance = std::abs((p - axes.centroid).dot(axes.PlaneNormal()));
+  fit.alignment = std::abs(n.dot(axes.PlaneNormal()));
+  return fit;
+}
+
+}  // namespace
+
 size_t ReassignDistalPoints(const PointGrid& grid, const std::vector<Eigen::Vector3f>& points,
                             const std::vector<Eigen::Vector3f>& normals, float link_radius,
                             int max_rounds, std::vector<int32_t>* cluster_of) {
   std::vector<int32_t>& owner = *cluster_of;
-  int32_t clusters = 0;
-  for (int32_t c : owner) clusters = std::max(clusters, c + 1);
   size_t total_moves = 0;
+  std::vector<LocalPart> parts;
+  std::vector<uint32_t> around;
+  // A decision depends only on the owners within link_radius, so after the first round only the
+  // points near a move need another look.
+  std::vector<uint8_t> unsettled(points.size(), 1);
   for (int round = 0; round < max_rounds; ++round) {
-    std::vector<std::vector<uint32_t>> members(static_cast<size_t>(clusters));
-    for (size_t i = 0; i < owner.size(); ++i) {
-      if (owner[i] != kUnassigned) members[static_cast<size_t>(owner[i])].push_back(i);
-    }
-    std::vector<PrincipalAxes> fit(members.size());
-    for (size_t c = 0; c < members.size(); ++c) {
-      if (!members[c].empty()) fit[c] = FitPrincipalAxes(points, members[c]);
-    }
     std::vector<int32_t> next = owner;
     size_t moves = 0;
     for (size_t i = 0; i < points.size(); ++i) {
       const int32_t a = owner[i];
-      if (a == kUnassigned) continue;
+      if (a == kUnassigned || !unsettled[i]) continue;
+      around.clear();
+      bool foreign = false;
+      grid.ForEachWithin(points[i], link_radius, [&](uint32_t j) {
+        if (owner[j] == kUnassigned) return;
+        around.push_back(j);
+        foreign = foreign || owner[j] != a;
+      });
+      if (!foreign) continue;  // inside its cluster: nothing to compare
+      // The clusters around p, own first, others in order of first appearance (deterministic).
+      parts.assign(1, LocalPart{a, {}});
+      for (uint32_t j : around) {
+        const int32_t b = owner[j];
+        auto part = std::find_if(parts.begin(), parts.end(),
+                                 [&](const LocalPart& q) { return q.cluster == b; });
+        if (part == parts.end()) part = parts.insert(parts.end(), LocalPart{b, {}});
+        part->members.push_back(j);
+      }
       const Eigen::Vector3d p = points[i].cast<double>();
       const Eigen::Vector3d n = normals[i].cast<double>();
-      const PrincipalAxes& own = fit[static_cast<size_t>(a)];
-      const double own_centroid = (p - own.centroid).norm();
-      const double own_align = std::abs(n.dot(own.PlaneNormal()));
-      const double own_plane = std::abs((p - own.centroid).dot(own.PlaneNormal()));
+      const LocalFit own = FitLocally(points, parts[0].members, p, n);
+      // The other cluster whose local plane fits p best, if it fits better than p's own.
       int32_t best = a;
-      double best_centroid = own_centroid;
-      grid.ForEachWithin(points[i], link_radius, [&](uint32_t j) {
-        const int32_t b = owner[j];
-        if (b == kUnassigned || b == a || b == best) return;
-        const PrincipalAxes& other = fit[static_cast<size_t>(b)];
-        const double centroid = (p - other.centroid).norm();
-        if (centroid >= best_centroid) return;
-        if (std::abs(n.dot(other.PlaneNormal())) <= own_align) return;
-        if (std::abs((p - other.centroid).dot(other.PlaneNormal())) >= own_plane) return;
-        best = b;
-        best_centroid = centroid;
-      });
+      double best_distance = own.plane_distance;
+      for (size_t k = 1; k < parts.size(); ++k) {
+        const LocalFit other = FitLocally(points, parts[k].members, p, n);
+        if (other.alignment <= own.alignment || other.plane_distance >= best_distance) continue;
+        best = parts[k].cluster;
+        best_distance = other.plane_distance;
+      }
       if (best != a) {
         next[i] = best;
         ++moves;
       }
+    }
+    std::fill(unsettled.begin(), unsettled.end(), 0);
+    for (size_t i = 0; i < points.size(); ++i) {
+      if (next[i] == owner[i]) continue;
+      grid.ForEachWithin(points[i], link_radius, [&](uint32_t j) { unsettled[j] = 1; });
     }
     owner = std::move(next);
     total_moves += moves;

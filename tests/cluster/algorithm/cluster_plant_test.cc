@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
+#include <numbers>
 #include <random>
 #include <set>
 #include <stdexcept>
@@ -16,6 +18,7 @@ namespace {
 
 using testing::AddCylinder;
 using testing::AddDisc;
+using testing::AddNoise;
 using testing::AddRectangle;
 
 size_t DistinctClusters(const Assignment& assignment) {
@@ -115,6 +118,52 @@ TEST(ClusterPlant, ElongatedLeafIsNotCutAtItsWidth) {
   ClusterReport report;
   const Assignment assignment = ClusterPlant(set, {}, &report);
   EXPECT_EQ(report.neck_splits, 0u);
+  EXPECT_EQ(DistinctClusters(assignment), 1u);
+}
+
+// Two 6 x 3 cm sheets that pass through each other along the middle of both at `angle` (an X
+// seen end-on), with the noise of the Table 2 sets: connected, no gap, no neck, and too little
+// normal gain for the normal constraint.
+PointSet CrossingSheets(float angle, std::mt19937_64& rng) {
+  PointSet set;
+  const float half = 0.015f;
+  const Eigen::Vector3f across(0, std::cos(angle), std::sin(angle));
+  AddRectangle(&set, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0.06f, 2 * half, 1500, 0, rng);
+  AddRectangle(&set, Eigen::Vector3f(0.005f, half, 0) - half * across, {1, 0, 0}, across, 0.06f,
+               2 * half, 1500, 1, rng);
+  AddNoise(&set, 0.0001f, 0.05f, rng);
+  return set;
+}
+
+TEST(ClusterPlant, CrossingSheetsAreSeparatedWhereTheirNormalsJump) {
+  std::mt19937_64 rng(23);
+  const PointSet set = CrossingSheets(static_cast<float>(25.0 * std::numbers::pi / 180.0), rng);
+  ClusterReport report;
+  const Assignment assignment = ClusterPlant(set, {}, &report);
+  EXPECT_EQ(report.initial_components, 1u);
+  EXPECT_EQ(report.normal_splits, 0u);
+  EXPECT_GE(report.sheet_splits, 1u);
+  EXPECT_EQ(DistinctClusters(assignment), 2u);
+  EXPECT_GE(CorrectlyClusteredFraction(assignment, set.labels), 0.99);
+
+  ClusterOptions without;
+  without.max_sheet_edge_bias = 0;
+  EXPECT_EQ(DistinctClusters(ClusterPlant(set, without)), 1u);
+}
+
+TEST(ClusterPlant, SheetFoldedAtTheSameAngleIsNotCutAtItsFold) {
+  std::mt19937_64 rng(24);
+  // One sheet folded along a line by the same 25 degrees (a leaf at its midrib): the normals jump
+  // there too, but both halves end at the fold instead of passing through each other.
+  PointSet set;
+  const float angle = static_cast<float>(25.0 * std::numbers::pi / 180.0);
+  AddRectangle(&set, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0.06f, 0.03f, 1500, 0, rng);
+  AddRectangle(&set, {0, 0.03f, 0}, {1, 0, 0}, {0, std::cos(angle), std::sin(angle)}, 0.06f, 0.03f,
+               1500, 0, rng);
+  AddNoise(&set, 0.0001f, 0.05f, rng);
+  ClusterReport report;
+  const Assignment assignment = ClusterPlant(set, {}, &report);
+  EXPECT_EQ(report.sheet_splits, 0u);
   EXPECT_EQ(DistinctClusters(assignment), 1u);
 }
 

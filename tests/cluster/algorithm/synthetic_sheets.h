@@ -1,6 +1,7 @@
 #pragma once
 
-// Small labelled point sets for the clustering tests: planes, a bent sheet, a leaf on a stem.
+// Small labelled point sets for the clustering tests: planes, a bent sheet, a leaf on a stem,
+// crossing sheets, and the measurement noise of a merged cloud.
 
 #include <Eigen/Geometry>
 #include <cmath>
@@ -51,6 +52,25 @@ inline void AddDisc(PointSet* set, const Eigen::Vector3f& centre, float radius, 
     set->points.push_back(centre + Eigen::Vector3f(r * std::cos(angle), r * std::sin(angle), 0));
     set->normals.push_back(Eigen::Vector3f::UnitZ());
     set->labels.push_back(label);
+  }
+}
+
+// Standard normal (Box-Muller on two uniforms).
+inline float Gaussian(std::mt19937_64& rng) {
+  const double u1 = 1.0 - Uniform(rng);  // (0, 1]
+  const double u2 = Uniform(rng);
+  return static_cast<float>(std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2));
+}
+
+// Perturbs every point by position_sigma (m, per axis) and every normal by about normal_sigma
+// (rad, per axis), as a merged multi-view stereo cloud would be.
+inline void AddNoise(PointSet* set, float position_sigma, float normal_sigma,
+                     std::mt19937_64& rng) {
+  for (size_t i = 0; i < set->points.size(); ++i) {
+    const Eigen::Vector3f dp(Gaussian(rng), Gaussian(rng), Gaussian(rng));
+    const Eigen::Vector3f dn(Gaussian(rng), Gaussian(rng), Gaussian(rng));
+    set->points[i] += position_sigma * dp;
+    set->normals[i] = (set->normals[i] + normal_sigma * dn).normalized();
   }
 }
 
