@@ -1,6 +1,6 @@
 // avc reconstruct: the reconstruction half of a scan on images with known cameras (a scan
 // directory, a COLMAP text model or a Middlebury set): masks, plant proxy, multi-view stereo,
-// merging and clustering, written with a scan directory's file names.
+// merging, clustering and surfacing, written with a scan directory's file names.
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -16,6 +16,7 @@
 #include "services/builder/reconstruction_output.h"
 #include "services/clusterer/clusters_ply.h"
 #include "services/clusterer/merge_and_cluster.h"
+#include "services/surfacer/surface_clusters.h"
 #include "tools/avc/cluster_cli.h"
 #include "tools/avc/commands.h"
 #include "tools/avc/run_guarded.h"
@@ -85,6 +86,17 @@ int RunReconstruct(const ReconstructArgs& args) {
     if (clusters.problem.empty()) {
       clusterer::WriteClustersPly(output / "clusters.ply", clusters);
       ++written;
+      // Surfacing (paper §4) of the clusters and the plant's traits, as the surfacer would.
+      const surfacer::SurfacerResult surface = surfacer::SurfaceClusters(clusters);
+      if (surface.problem.empty()) {
+        surfacer::WriteSurfacerFiles(surface, output);  // mesh.ply, traits.csv, traits.json
+        written += 3;
+        std::cout << fmt::format("surface: {} faces in {} pieces, {:.1f} cm^2\n",
+                                 surface.mesh.faces.size(), surface.report.components,
+                                 1e4 * surface.traits.total_area);
+      } else {
+        std::cout << "no surface: " << surface.problem << "\n";
+      }
     }
   }
   std::cout << fmt::format("wrote {} files to {}\n", written, output.string());
@@ -101,8 +113,8 @@ void RegisterReconstruct(CLI::App& root, int* exit_code) {
       "Reconstruct a plant from images with known cameras: plant masks (automatic unless\n"
       "masks/<image name> are given), the plant proxy (tolerant octree carving, ppr.bt) and\n"
       "multi-view stereo points (points.ply, with confidence and the images that see each\n"
-      "point), merged into the proxy's voxels (merged.ply) and clustered into surface patches\n"
-      "(clusters.ply).\n"
+      "point), merged into the proxy's voxels (merged.ply), clustered into surface patches\n"
+      "(clusters.ply) and surfaced (mesh.ply; plant traits in traits.csv and traits.json).\n"
       "Datasets: a scan directory (cameras.json + images/), a COLMAP text model (cameras.txt +\n"
       "images.txt, in the folder or in sparse/ or colmap/) or a Middlebury set (*_par.txt).\n"
       "A simulated scan's ground truth (gt_mesh.ply) is used to report accuracy.\n"

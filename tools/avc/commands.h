@@ -27,5 +27,6 @@ void RegisterReconstruct(CLI::App& root, int* exit_code);
 void RegisterBuilder(CLI::App& root, int* exit_code);
 void RegisterCluster(CLI::App& root, int* exit_code);
 void RegisterClusterer(CLI::App& root, int* exit_code);
+void RegisterSurfacer(CLI::App& root, int* exit_code);
 
 }  // namespace avc::cli

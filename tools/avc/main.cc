@@ -53,6 +53,7 @@ int main(int argc, char** argv) {
   avc::cli::RegisterBuilder(app, &exit_code);
   avc::cli::RegisterCluster(app, &exit_code);
   avc::cli::RegisterClusterer(app, &exit_code);
+  avc::cli::RegisterSurfacer(app, &exit_code);
   ShortenListings(app);
   try {
     app.parse(argc, argv);

@@ -1,0 +1,42 @@
+#pragma once
+
+// The surfacer's work (paper §4), the same offline and on the bus (surfacer_node.h): the
+// clusterer's merged, clustered points triangulated into one mesh (core/surface, Algorithm 3)
+// and the plant's traits measured on it (core/traits).
+
+#include <filesystem>
+#include <string>
+
+#include "core/geometry/mesh.h"
+#include "core/messages/clusters_message.h"
+#include "core/surface/surface_options.h"
+#include "core/surface/surface_reconstruction.h"
+#include "core/traits/plant_traits.h"
+
+namespace avc::surfacer {
+
+struct SurfacerOptions {
+  surface::SurfaceOptions surface;
+  traits::TraitOptions traits;
+};
+
+struct SurfacerResult {
+  std::string cloud_id;  // the clusters' cloud id this answers
+  // Empty when a surface was made; else why not (the clusters' own problem, bad points, bad
+  // options, no cluster that could be triangulated). The mesh may then be empty.
+  std::string problem;
+  geometry::Mesh mesh;  // face_labels: cluster ids; colours: the points' when they have them
+  surface::SurfaceReport report;
+  traits::PlantTraits traits;
+};
+
+// Never throws for bad data: every problem ends up in `problem`.
+SurfacerResult SurfaceClusters(const messages::ClustersContent& clusters,
+                               const SurfacerOptions& options = {});
+
+// Writes directory/mesh.ply (binary; per-face `label` = cluster id, per-vertex colours),
+// directory/traits.csv and directory/traits.json. Throws std::runtime_error naming the file when
+// it cannot be written.
+void WriteSurfacerFiles(const SurfacerResult& result, const std::filesystem::path& directory);
+
+}  // namespace avc::surfacer

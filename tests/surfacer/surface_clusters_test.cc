@@ -1,0 +1,115 @@
+// The surfacer library: clusters to a mesh with cluster ids and colours and the plant's traits,
+// problems reported by name and never thrown, the files it writes, and the mesh message codec.
+
+#include "services/surfacer/surface_clusters.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <set>
+
+#include "core/geometry/mesh_io.h"
+#include "services/surfacer/mesh_message.h"
+#include "tests/support/test_support.h"
+#include "tests/surfacer/two_leaf_clusters.h"
+
+namespace avc::surfacer {
+namespace {
+
+TEST(SurfaceClusters, TwoLeavesBecomeAMeshWithClusterIdsColoursAndTraits) {
+  const SurfacerResult result = SurfaceClusters(testing::TwoLeafClusters("plant-mvs-1"));
+  ASSERT_EQ(result.problem, "");
+  EXPECT_EQ(result.cloud_id, "plant-mvs-1");
+  const geometry::Mesh& mesh = result.mesh;
+  EXPECT_EQ(mesh.Validate(), "");
+  ASSERT_EQ(mesh.face_labels.size(), mesh.faces.size());
+  EXPECT_EQ(std::set<int32_t>(mesh.face_labels.begin(), mesh.face_labels.end()),
+            (std::set<int32_t>{0, 1}));
+  ASSERT_EQ(mesh.colors.size(), mesh.vertices.size());
+  EXPECT_EQ(mesh.colors.front().x(), 40);
+  // Evenly sampled discs: the surfacer's growth restores the outline (area within 5 %), and
+  // two leaves 4 cm apart stay two pieces.
+  EXPECT_NEAR(geometry::SurfaceArea(mesh), testing::TwoLeafArea(), 0.05 * testing::TwoLeafArea());
+  EXPECT_EQ(result.report.components, 2);
+  EXPECT_NEAR(result.traits.total_area, geometry::SurfaceArea(mesh), 1e-9);
+  ASSERT_EQ(result.traits.clusters.size(), 2u);
+  EXPECT_NEAR(result.traits.clusters[0].inclination, 0.0, 0.05);  // facing up
+}
+
+TEST(SurfaceClusters, ProblemsAreReportedByNameNotThrown) {
+  messages::ClustersContent refused;
+  refused.cloud_id = "c1";
+  refused.problem = "no plant proxy arrived";
+  SurfacerResult result = SurfaceClusters(refused);
+  EXPECT_NE(result.problem.find("'c1'"), std::string::npos) << result.problem;
+  EXPECT_NE(result.problem.find("no plant proxy arrived"), std::string::npos) << result.problem;
+  EXPECT_TRUE(result.mesh.faces.empty());
+
+  messages::ClustersContent short_ids = testing::TwoLeafClusters("c2");
+  short_ids.clusters.pop_back();
+  result = SurfaceClusters(short_ids);
+  EXPECT_NE(result.problem.find("'c2'"), std::string::npos) << result.problem;
+  EXPECT_NE(result.problem.find("cluster"), std::string::npos) << result.problem;
+
+  messages::ClustersContent outliers = testing::TwoLeafClusters("c3");
+  for (int32_t& id : outliers.clusters) id = cluster::kUnassigned;
+  result = SurfaceClusters(outliers);
+  EXPECT_NE(result.problem.find("no surface could be made"), std::string::npos) << result.problem;
+
+  // A NaN point is left out with a warning; the rest is surfaced.
+  messages::ClustersContent nan = testing::TwoLeafClusters("c4");
+  nan.merged.cloud.positions[10].x() = std::numeric_limits<float>::quiet_NaN();
+  result = SurfaceClusters(nan);
+  EXPECT_EQ(result.problem, "");
+  EXPECT_FALSE(result.report.warnings.empty());
+
+  SurfacerOptions bad;
+  bad.surface.alpha_factor = -1;
+  result = SurfaceClusters(testing::TwoLeafClusters("c5"), bad);
+  EXPECT_NE(result.problem.find("alpha"), std::string::npos) << result.problem;
+}
+
+TEST(SurfaceClusters, WritesTheMeshAndTraitFiles) {
+  ::avc::testing::TempDir dir("avc-surfacer-files");
+  const SurfacerResult result = SurfaceClusters(testing::TwoLeafClusters("plant-mvs-1"));
+  WriteSurfacerFiles(result, dir / "out");
+  const geometry::Mesh read = geometry::ReadMesh(dir / "out" / "mesh.ply");
+  EXPECT_EQ(read.vertices, result.mesh.vertices);
+  EXPECT_EQ(read.face_labels, result.mesh.face_labels);
+  EXPECT_EQ(read.colors, result.mesh.colors);
+  const std::string csv = ::avc::testing::ReadFile(dir / "out" / "traits.csv");
+  EXPECT_NE(csv.find("total_area"), std::string::npos) << csv;
+  EXPECT_TRUE(std::filesystem::exists(dir / "out" / "traits.json"));
+}
+
+TEST(MeshMessage, RoundTripsExactlyWithTheSameBytes) {
+  const geometry::Mesh mesh = SurfaceClusters(testing::TwoLeafClusters("m")).mesh;
+  const avc::mesh_t a = MeshToMessage(mesh, "m");
+  const avc::mesh_t b = MeshToMessage(mesh, "m");
+  EXPECT_EQ(a.data, b.data);
+  EXPECT_EQ(a.num_faces, static_cast<int32_t>(mesh.faces.size()));
+  const geometry::Mesh back = MeshFromMessage(a);
+  EXPECT_EQ(back.vertices, mesh.vertices);
+  EXPECT_EQ(back.faces, mesh.faces);
+  EXPECT_EQ(back.face_labels, mesh.face_labels);
+  EXPECT_EQ(back.colors, mesh.colors);
+  EXPECT_EQ(MeshFromMessage(MeshToMessage(geometry::Mesh{}, "empty")).vertices.size(), 0u);
+
+  avc::mesh_t lying = a;
+  lying.num_faces += 1;
+  EXPECT_THROW(MeshFromMessage(lying), std::invalid_argument);
+  avc::mesh_t cut = a;
+  cut.data.resize(cut.data.size() / 2);
+  cut.data_size = static_cast<int32_t>(cut.data.size());
+  try {
+    MeshFromMessage(cut);
+    ADD_FAILURE() << "a truncated PLY was accepted";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_NE(std::string(error.what()).find("mesh 'm'"), std::string::npos) << error.what();
+  }
+}
+
+}  // namespace
+}  // namespace avc::surfacer

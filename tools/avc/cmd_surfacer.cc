@@ -1,0 +1,68 @@
+// avc surfacer: the avc-surfacer service. Surfaces every clusters product (PRODUCT/CLUSTERS)
+// into one mesh (the paper's Algorithm 3) and publishes it on PRODUCT/MESH, with the plant's
+// traits written beside the mesh when --output is given.
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "core/bus/service_runtime.h"
+#include "services/surfacer/surfacer_node.h"
+#include "tools/avc/bus_flags.h"
+#include "tools/avc/commands.h"
+#include "tools/avc/run_guarded.h"
+
+namespace avc::cli {
+namespace {
+
+struct SurfacerArgs {
+  surfacer::SurfacerNodeOptions node;
+  std::string output;
+  bus::BusFlags bus;
+};
+
+int RunSurfacer(SurfacerArgs args) {
+  surfacer::SurfacerNodeOptions options = args.node;
+  options.output_dir = args.output;
+  if (const std::string problem = options.Validate(); !problem.empty()) {
+    throw std::invalid_argument(problem);
+  }
+  bus::ServiceRuntime runtime(options.service, args.bus);
+  surfacer::SurfacerNode node(runtime.bus(), runtime.loop(), runtime.heartbeat(), options);
+  return runtime.Run();
+}
+
+}  // namespace
+
+void RegisterSurfacer(CLI::App& root, int* exit_code) {
+  auto args = std::make_shared<SurfacerArgs>();
+  surface::SurfaceOptions& surface = args->node.surfacing.surface;
+  CLI::App* command = root.add_subcommand(
+      "surfacer",
+      "Run the avc-surfacer service. Triangulates every clusters product (PRODUCT/CLUSTERS)\n"
+      "into one connected mesh (the paper's Algorithm 3: cells on each cluster's regression\n"
+      "plane, boundary growth, mesh repairs and smoothing, cell merging) and publishes it on\n"
+      "PRODUCT/MESH as a binary PLY (per-face label = cluster id, per-vertex colours), one\n"
+      "answer per clusters product (an empty mesh when nothing could be surfaced; the reason\n"
+      "is logged and in the heartbeat).");
+  command
+      ->add_option("--spacing", surface.spacing,
+                   "point spacing in m that every threshold is a multiple of (0: measured, the "
+                   "median nearest-neighbour distance)")
+      ->capture_default_str();
+  command->add_option("--alpha-factor", surface.alpha_factor, "Phase 1 alpha in spacings")
+      ->capture_default_str();
+  command
+      ->add_option("--stitch-factor", surface.stitch_factor, "Phase 4 stitch distance in spacings")
+      ->capture_default_str();
+  command->add_option("--ground-z", args->node.surfacing.traits.ground_z,
+                      "height of the ground in m that plant height is measured from (default: "
+                      "the mesh's lowest point)");
+  command->add_option("--output", args->output,
+                      "also write each result to OUTPUT/<cloud id>/ as mesh.ply, traits.csv "
+                      "and traits.json");
+  AddBusFlags(command, &args->bus);
+  SetGuardedRun(command, exit_code, [args] { return RunSurfacer(*args); });
+}
+
+}  // namespace avc::cli
