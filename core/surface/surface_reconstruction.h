@@ -2,8 +2,9 @@
 
 // The surfacer (paper §4, Algorithm 3) from a clustered merged point cloud to one mesh:
 //  Phase 1 (triangulate_cell.h): each cluster triangulated on its regression plane -> a cell.
-//  Phase 2 (boundary_growth.h): the paper's image-driven level sets are not implemented yet; in
-//          their place a geometric growth closes the band the sampling leaves at each outline.
+//  Phase 2 (boundary_growth.h): a geometric growth of each outline along its cell's plane closes
+//          the band the sampling leaves there. It stands where the paper's image-driven level
+//          sets go (issue 9); Cell keeps its plane and per-vertex sources for them.
 //  Phase 3 (mesh_modifications.h): long triangles and slivers removed, small holes filled,
 //          Laplacian smoothing (interior, then boundary).
 //  Phase 4 (cell_merging.h): neighbouring cells stitched into a connected surface; the holes
