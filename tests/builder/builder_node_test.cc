@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <octomap/OcTree.h>
 
+#include <algorithm>
 #include <avc/ack_t.hpp>
 #include <avc/heartbeat_t.hpp>
 #include <avc/image_t.hpp>
@@ -144,6 +145,17 @@ struct Harness {
       if (ack.request_id == id && ack.status != avc::ack_t::STATUS_ACCEPTED) last = ack;
     }
     return last;
+  }
+  // Runs the loop until every request has its final answer (the node answers asynchronously, and
+  // a loaded machine can take far longer than any fixed pause).
+  bool WaitForAnswers(const std::vector<std::string>& ids,
+                      milliseconds timeout = milliseconds(10000)) {
+    return WaitFor(
+        [&] {
+          return std::ranges::all_of(ids,
+                                     [&](const std::string& id) { return Final(id).has_value(); });
+        },
+        timeout);
   }
   int Count(const std::string& id, int8_t status) const {
     int count = 0;
@@ -284,7 +296,8 @@ TEST(BuilderNode, GrowsTheProxyAsViewsArriveAndRunsMvsLikeTheOfflineBuild) {
   // A repeated request gets its answer again and runs nothing.
   const size_t acks_before = h.acks.size();
   h.Command("mvs-1", avc::build_command_t::ACTION_RUN_MVS);
-  h.Settle(milliseconds(200));
+  ASSERT_TRUE(h.WaitFor([&] { return h.acks.size() > acks_before; }));
+  h.Settle(milliseconds(200));  // room for a second answer or a run, which must not come
   EXPECT_FALSE(h.node->mvs_running());
   ASSERT_EQ(h.acks.size(), acks_before + 1);
   EXPECT_EQ(h.acks.back().status, avc::ack_t::STATUS_DONE);
@@ -300,7 +313,7 @@ TEST(BuilderNode, GrowsTheProxyAsViewsArriveAndRunsMvsLikeTheOfflineBuild) {
 
   // RESET starts a new scan: the same images are welcome again.
   h.Command("reset", avc::build_command_t::ACTION_RESET);
-  h.Settle();
+  ASSERT_TRUE(h.WaitForAnswers({"reset"}));
   EXPECT_EQ(h.Final("reset")->status, avc::ack_t::STATUS_DONE);
   EXPECT_EQ(h.node->views_integrated(), 0);
   EXPECT_FALSE(h.node->has_proxy());
@@ -323,7 +336,8 @@ TEST(BuilderNode, RefusesBadCommandsNamingWhatIsWrong) {
   h.Command("none-method", avc::build_command_t::ACTION_RUN_MVS, {}, "none");
   h.Command("bad-action", 7);
   h.Command("", avc::build_command_t::ACTION_RESET);
-  h.Settle(milliseconds(200));
+  ASSERT_TRUE(h.WaitForAnswers(
+      {"finer", "one-view", "unknown-ids", "bad-method", "none-method", "bad-action", ""}));
   EXPECT_NE(RefusalOf(h, "finer").find("no proxy yet (2 of 3 views"), std::string::npos)
       << RefusalOf(h, "finer");
   EXPECT_NE(RefusalOf(h, "one-view").find("at least 2 integrated views, 1 chosen"),
@@ -372,7 +386,7 @@ TEST(BuilderNode, KeepsABoundedNumberOfImagesWaitingForCameras) {
   h.Settle(milliseconds(100));
   EXPECT_EQ(h.node->views_integrated(), 2);
   h.Command("mvs-without-0", avc::build_command_t::ACTION_RUN_MVS, {"view_0000", "view_0001"});
-  h.Settle();
+  ASSERT_TRUE(h.WaitForAnswers({"mvs-without-0"}));
   EXPECT_NE(RefusalOf(h, "mvs-without-0").find("view_0000 not integrated"), std::string::npos);
   // Sent again, it is welcome.
   h.SendImage(ImageMessage(set.views[0]));
@@ -388,8 +402,7 @@ TEST(BuilderNode, StoppingDuringMvsFailsTheRunningRequest) {
   h.Command("mvs", avc::build_command_t::ACTION_RUN_MVS, {}, "plane-sweep");
   ASSERT_TRUE(h.WaitFor([&] { return h.node->mvs_running(); }));
   h.node.reset();
-  h.Settle();
-  ASSERT_TRUE(h.Final("mvs").has_value());
+  ASSERT_TRUE(h.WaitForAnswers({"mvs"}));
   EXPECT_EQ(h.Final("mvs")->status, avc::ack_t::STATUS_FAILED);
   EXPECT_NE(h.Final("mvs")->reason.find("stopped before the MVS run finished"), std::string::npos);
 }

@@ -10,6 +10,7 @@
 #include <avc/mvs_points_t.hpp>
 #include <avc/voxel_map_t.hpp>
 #include <chrono>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -59,6 +60,9 @@ struct Harness {
   bool WaitForAnswers(size_t count) {
     return loop.RunUntil([&] { return answers.size() >= count; }, milliseconds(10000));
   }
+  bool WaitFor(const std::function<bool()>& done) {
+    return loop.RunUntil(done, milliseconds(10000));
+  }
   void Settle() {
     loop.RunUntil([] { return false; }, milliseconds(100));
   }
@@ -106,8 +110,7 @@ TEST(ClustererNode, BadCloudsAreAnsweredWithTheirProblemAndBadMapsKeepTheOldProx
   const testing::TwoDiscs scene = testing::MakeTwoDiscs();
   Harness h;
   h.sender.SendMessage(channels::kProductVoxelMap, "ppr/m1.bt", VoxelMap("m1", scene.proxy_bt));
-  h.Settle();
-  ASSERT_TRUE(h.node->has_proxy());
+  ASSERT_TRUE(h.WaitFor([&] { return h.node->has_proxy(); }));
   // A corrupt map is refused; the proxy in hand stays.
   h.sender.SendMessage(channels::kProductVoxelMap, "ppr/m2.bt", VoxelMap("m2", "not a tree"));
   h.Settle();
