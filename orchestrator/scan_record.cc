@@ -1,8 +1,6 @@
 #include "orchestrator/scan_record.h"
 
-#include <fcntl.h>
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <cerrno>
 #include <cmath>
@@ -14,6 +12,7 @@
 #include <stdexcept>
 
 #include "core/util/sha256.h"
+#include "orchestrator/atomic_file.h"
 
 namespace avc::orchestrator {
 namespace {
@@ -28,62 +27,6 @@ constexpr const char* kFileName = "scan.json";
 
 [[noreturn]] void SystemFail(const std::string& action, const fs::path& path, int error) {
   throw std::runtime_error(fmt::format("{} {}: {}", action, path.string(), std::strerror(error)));
-}
-
-// Closes the descriptor on every exit path.
-class Fd {
- public:
-  explicit Fd(int fd) : fd_(fd) {}
-  ~Fd() {
-    if (fd_ >= 0) ::close(fd_);
-  }
-  Fd(const Fd&) = delete;
-  Fd& operator=(const Fd&) = delete;
-  int get() const { return fd_; }
-  // Closes now and reports close's result (it can carry a delayed write error).
-  int Close() {
-    const int result = ::close(fd_);
-    fd_ = -1;
-    return result;
-  }
-
- private:
-  int fd_;
-};
-
-void WriteAll(int fd, const std::string& bytes, const fs::path& path) {
-  size_t done = 0;
-  while (done < bytes.size()) {
-    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) SystemFail("cannot write", path, errno);
-    done += static_cast<size_t>(n);
-  }
-}
-
-// Writes bytes to path.tmp, syncs it, renames it over path and syncs the directory, so a crash at
-// any point leaves either the old file or the new one, never a torn one.
-void ReplaceFileAtomically(const fs::path& path, const std::string& bytes) {
-  const fs::path tmp = path.string() + ".tmp";
-  {
-    Fd file(::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644));
-    if (file.get() < 0) SystemFail("cannot create", tmp, errno);
-    try {
-      WriteAll(file.get(), bytes, tmp);
-      if (::fsync(file.get()) != 0) SystemFail("cannot sync", tmp, errno);
-      if (file.Close() != 0) SystemFail("cannot close", tmp, errno);
-      if (::rename(tmp.c_str(), path.c_str()) != 0) {
-        SystemFail(fmt::format("cannot rename {} over", tmp.string()), path, errno);
-      }
-    } catch (...) {
-      ::unlink(tmp.c_str());  // best effort: the error being thrown matters more
-      throw;
-    }
-  }
-  const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
-  Fd directory(::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
-  if (directory.get() < 0) SystemFail("cannot open directory", dir, errno);
-  if (::fsync(directory.get()) != 0) SystemFail("cannot sync directory", dir, errno);
 }
 
 OrderedJson CaptureToJson(const CaptureRecord& capture) {
@@ -186,8 +129,11 @@ std::string CheckRecord(const ScanRecord& record) {
       if (!std::isfinite(joint)) return field + ".joints must be finite";
     }
     if (!std::isfinite(capture.table_angle)) return field + ".table_angle must be finite";
-    if (capture.phase != "frame" && capture.phase != "initial" && capture.phase != "active") {
-      return fmt::format("{}.phase '{}' must be frame, initial or active", field, capture.phase);
+    // Empty until the planner has finished and said which images were frames, orbit or active.
+    if (!capture.phase.empty() && capture.phase != "frame" && capture.phase != "initial" &&
+        capture.phase != "active") {
+      return fmt::format("{}.phase '{}' must be empty, frame, initial or active", field,
+                         capture.phase);
     }
   }
   return "";
@@ -363,7 +309,7 @@ void SaveScanRecord(const ScanRecord& record, const fs::path& scan_dir) {
   if (const std::string problem = CheckRecord(record); !problem.empty()) {
     throw std::invalid_argument(fmt::format("refusing to write {}: {}", path.string(), problem));
   }
-  ReplaceFileAtomically(path, RecordToJson(record).dump(2) + "\n");
+  WriteFileAtomically(path, RecordToJson(record).dump(2) + "\n");
 }
 
 ScanRecord LoadScanRecord(const fs::path& scan_dir) {

@@ -24,7 +24,7 @@ struct CaptureRecord {
   std::string sha256;              // hex of the file bytes
   std::array<double, 6> joints{};  // rad
   double table_angle = 0;          // rad
-  std::string phase;               // "frame", "initial", "active"
+  std::string phase;               // "frame", "initial", "active"; "" until planned
   std::string reason;              // why this view was taken
   bool kept = true;                // false once PRUNE_VIEWS drops it
 

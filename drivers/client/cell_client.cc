@@ -1,7 +1,9 @@
 #include "drivers/client/cell_client.h"
 
 #include <fmt/format.h>
+#include <unistd.h>
 
+#include <atomic>
 #include <avc/capture_request_t.hpp>
 #include <avc/robot_state_t.hpp>
 #include <avc/turntable_state_t.hpp>
@@ -16,9 +18,17 @@ namespace {
 
 int64_t WallMicros() { return SystemClock().NowMicros(); }
 
+// Distinct for every client a process or its restarts make: the process id and the start time.
+std::string SessionTag() {
+  static std::atomic<int> clients{0};
+  return fmt::format("{:x}{:x}{}", static_cast<uint32_t>(getpid()),
+                     static_cast<uint64_t>(WallMicros()) & 0xffffff, clients++);
+}
+
 }  // namespace
 
-CellClient::CellClient(bus::Bus& bus, bus::EventLoop& loop) : bus_(bus), loop_(loop) {
+CellClient::CellClient(bus::Bus& bus, bus::EventLoop& loop, std::string name)
+    : bus_(bus), loop_(loop), id_prefix_(fmt::format("{}-{}-", name, SessionTag())) {
   subscriptions_.push_back(
       bus_.Subscribe<avc::ack_t>(channels::kAck, [this](const avc::ack_t& ack, const bus::RxInfo&) {
         heard_.insert(ack.request_id);
@@ -42,8 +52,7 @@ CellClient::CellClient(bus::Bus& bus, bus::EventLoop& loop) : bus_(bus), loop_(l
         ++table_states_;
       }));
   receiver_ = std::make_unique<products::ProductReceiver>(
-      bus_, "avc-bench", "PRODUCT/IMAGE",
-      [this](const products::Product& product, const bus::RxInfo&) {
+      bus_, name, "PRODUCT/IMAGE", [this](const products::Product& product, const bus::RxInfo&) {
         products_[product.name] = {product, WallMicros()};
       });
 }
@@ -85,7 +94,7 @@ void CellClient::WaitFreshState(std::chrono::milliseconds timeout) {
 }
 
 std::string CellClient::NextId(const std::string& what) {
-  return fmt::format("bench-{}-{}", what, next_id_++);
+  return fmt::format("{}{}-{}", id_prefix_, what, next_id_++);
 }
 
 double CellClient::SendUntilDone(const std::string& id, const std::function<void()>& send,
@@ -101,10 +110,11 @@ double CellClient::SendUntilDone(const std::string& id, const std::function<void
     throw std::runtime_error(fmt::format("no answer to '{}' within {} ms", id, timeout.count()));
   }
   const avc::ack_t& ack = final_acks_.at(id);
+  if (ack.status == avc::ack_t::STATUS_REFUSED) {
+    throw CommandRefused(fmt::format("{} refused '{}': {}", ack.service, id, ack.reason));
+  }
   if (ack.status != avc::ack_t::STATUS_DONE) {
-    throw std::runtime_error(fmt::format(
-        "{} {} '{}': {}", ack.service,
-        ack.status == avc::ack_t::STATUS_REFUSED ? "refused" : "failed", id, ack.reason));
+    throw std::runtime_error(fmt::format("{} failed '{}': {}", ack.service, id, ack.reason));
   }
   return (MonotonicMicros() - sent_us) * 1e-6;
 }

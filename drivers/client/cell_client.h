@@ -5,6 +5,8 @@
 // product. Every call runs the event loop until the answer comes and times it; a refusal, a
 // failure or a timeout throws with the service's reason. Lost datagrams are covered by
 // re-sending a request until it is acknowledged (a repeated request id never repeats work).
+// Request ids carry a per-client session tag: drivers answer a repeated id from memory, so a
+// restarted program counting from 1 again must not reuse the ids of its previous life.
 
 #include <Eigen/Geometry>
 #include <avc/ack_t.hpp>
@@ -27,6 +29,14 @@
 
 namespace avc::client {
 
+// A command the service refused (unreachable target, outside the safety envelope, bad value):
+// the cell is fine, the request was not. Other failures (timeouts, FAILED) are plain
+// std::runtime_error.
+class CommandRefused : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 struct CapturedView {
   avc::image_t image;
   double request_to_sent_s = 0;   // camera side: settings, exposure, render, download, packaging
@@ -36,7 +46,8 @@ struct CapturedView {
 
 class CellClient {
  public:
-  CellClient(bus::Bus& bus, bus::EventLoop& loop);
+  // `name` starts every request id and names this client as a product consumer.
+  CellClient(bus::Bus& bus, bus::EventLoop& loop, std::string name = "avc-bench");
   ~CellClient();
   CellClient(const CellClient&) = delete;
   CellClient& operator=(const CellClient&) = delete;
@@ -73,6 +84,7 @@ class CellClient {
   bus::EventLoop& loop_;
   std::vector<bus::Bus::SubscriptionId> subscriptions_;
   std::unique_ptr<products::ProductReceiver> receiver_;
+  std::string id_prefix_;                         // name-session-
   std::map<std::string, avc::ack_t> final_acks_;  // by request id: DONE, FAILED or REFUSED
   std::set<std::string> heard_;                   // request ids with any ack
   std::map<std::string, avc::heartbeat_t> health_;

@@ -42,6 +42,7 @@ struct Run {
   std::vector<cv::Mat> masks;  // per result.views entry
   kinematics::JointVector joints;
   std::vector<double> distances;  // Phase 1's per height
+  std::function<void(ActiveVisionStage)> stage;
 
   // Captures `view` and records it; false when the capture failed.
   bool Take(PlannedView planned) {
@@ -51,6 +52,7 @@ struct Run {
                                          planned.view.turntable_angle / kDegree, planned.reason));
       return false;
     }
+    if (result.views.empty()) stage(ActiveVisionStage::kInitialCapture);
     joints = planned.view.joints;
     if (result.proxy) result.proxy->AddView(planned.view.camera, *mask);
     masks.push_back(std::move(*mask));
@@ -227,14 +229,21 @@ size_t ActiveVisionResult::KeptCount() const {
 }
 
 ActiveVisionResult RunActiveVision(const sim::CellTruth& cell, const CaptureFunction& capture,
-                                   const ActiveVisionOptions& options) {
+                                   const ActiveVisionOptions& options,
+                                   const StageFunction& on_stage) {
   if (options.levels < 1 || options.levels > static_cast<int>(options.elevations_deg.size())) {
     throw std::invalid_argument(fmt::format("active vision: {} heights but {} elevations given",
                                             options.levels, options.elevations_deg.size()));
   }
-  Run run{cell, capture, options, {}, {}, sim::StartJoints(cell), {}};
+  const auto stage = [&](ActiveVisionStage next) {
+    if (on_stage) on_stage(next);
+  };
+  Run run{cell, capture, options, {}, {}, sim::StartJoints(cell), {}, stage};
+  stage(ActiveVisionStage::kFrame);
   for (int level = 0; level < options.levels; ++level) run.InitialLevel(level);
+  stage(ActiveVisionStage::kActiveVision);
   run.ActiveVision();
+  stage(ActiveVisionStage::kPruneViews);
   run.RemoveRedundantAndRefine();
   run.result.framed_distances = run.distances;
   return std::move(run.result);

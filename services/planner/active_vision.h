@@ -87,9 +87,17 @@ struct ActiveVisionResult {
   size_t KeptCount() const;
 };
 
+// The stages of a run, in order, for a caller that tracks them (the orchestrator's states):
+// framing the first height, the first orbit view taken (later heights frame and orbit within
+// this stage), the next-best-view rounds, redundant-view removal.
+enum class ActiveVisionStage { kFrame, kInitialCapture, kActiveVision, kPruneViews };
+using StageFunction = std::function<void(ActiveVisionStage stage)>;
+
 // Throws std::runtime_error naming the problem when no plant is found by the colour filter in a
-// framing frame or no view of the first height is reachable.
+// framing frame or no view of the first height is reachable. `on_stage` (optional) hears each
+// stage as it starts.
 ActiveVisionResult RunActiveVision(const sim::CellTruth& cell, const CaptureFunction& capture,
-                                   const ActiveVisionOptions& options = {});
+                                   const ActiveVisionOptions& options = {},
+                                   const StageFunction& on_stage = {});
 
 }  // namespace avc::planner

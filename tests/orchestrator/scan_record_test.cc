@@ -295,7 +295,7 @@ TEST(ScanRecord, MalformedFieldsAreNamed) {
   ExpectLoadError([](Json& d) { d["captures"][1]["sha256"] = "abc"; },
                   "captures[1].sha256 must be 64 lower-case hex digits");
   ExpectLoadError([](Json& d) { d["captures"][1]["phase"] = "later"; },
-                  "captures[1].phase 'later' must be frame, initial or active");
+                  "captures[1].phase 'later' must be empty, frame, initial or active");
   ExpectLoadError([](Json& d) { d["captures"][1]["index"] = -1; },
                   "captures[1].index is out of range");
   ExpectLoadError([](Json& d) { d["captures"][2]["index"] = 0; },

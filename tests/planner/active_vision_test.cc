@@ -63,8 +63,26 @@ ActiveVisionOptions SmallRun() {
 
 TEST(ActiveVision, FramesOrbitsAddsViewsAndPrunesWithoutLosingCoverage) {
   const Plant& plant = TestPlant();
-  const auto capture = [&](const CellView& view) { return LabelCapture(plant.scene, view); };
-  const ActiveVisionResult result = RunActiveVision(plant.cell, capture, SmallRun());
+  // Each stage is announced once, in order, and the orbit starts only after framing captured.
+  std::vector<ActiveVisionStage> stages;
+  std::vector<size_t> captures_at_stage;
+  size_t captures = 0;
+  const auto capture = [&](const CellView& view) {
+    ++captures;
+    return LabelCapture(plant.scene, view);
+  };
+  const ActiveVisionResult result =
+      RunActiveVision(plant.cell, capture, SmallRun(), [&](ActiveVisionStage stage) {
+        stages.push_back(stage);
+        captures_at_stage.push_back(captures);
+      });
+  EXPECT_EQ(stages, (std::vector<ActiveVisionStage>{
+                        ActiveVisionStage::kFrame, ActiveVisionStage::kInitialCapture,
+                        ActiveVisionStage::kActiveVision, ActiveVisionStage::kPruneViews}));
+  ASSERT_EQ(captures_at_stage.size(), 4u);
+  EXPECT_EQ(captures_at_stage[0], 0u);
+  EXPECT_GT(captures_at_stage[1], captures_at_stage[0]) << "framing takes frames first";
+  EXPECT_GE(captures_at_stage[2], captures_at_stage[1] + 30) << "the whole orbit before NBV";
 
   const size_t initial = std::count_if(result.views.begin(), result.views.end(),
                                        [](const PlannedView& v) { return v.phase == "initial"; });

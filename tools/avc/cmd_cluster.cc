@@ -6,15 +6,12 @@
 
 #include <chrono>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
 
-#include "core/mvs/mvs_points_io.h"
-#include "core/ppr/octree_voxels.h"
+#include "services/clusterer/cluster_folder.h"
 #include "services/clusterer/clusters_ply.h"
 #include "services/clusterer/merge_and_cluster.h"
 #include "tools/avc/cluster_cli.h"
@@ -35,26 +32,6 @@ struct ClusterArgs {
   bool overwrite = false;
 };
 
-std::string ReadBytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " + path.string());
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-// The exact voxel size from build.json beside the proxy (the .bt keeps 6 digits), else 0.
-double VoxelSizeFromReport(const fs::path& folder) {
-  const fs::path report = folder / "build.json";
-  if (!fs::exists(report)) return 0;
-  try {
-    const nlohmann::json json = nlohmann::json::parse(ReadBytes(report));
-    return json.at("proxy").at("voxel_size_m").get<double>();
-  } catch (const nlohmann::json::exception& error) {
-    std::cerr << fmt::format("{}: no proxy voxel size ({}); using the tree's\n", report.string(),
-                             error.what());
-    return 0;
-  }
-}
-
 int RunCluster(const ClusterArgs& args) {
   const fs::path folder = args.folder;
   const fs::path points_file = args.points.empty() ? folder / "points.ply" : fs::path(args.points);
@@ -64,16 +41,14 @@ int RunCluster(const ClusterArgs& args) {
   if (fs::exists(clusters_file) && !args.overwrite) {
     throw std::runtime_error(clusters_file.string() + " exists; --overwrite replaces it");
   }
-  const mvs::MvsPoints points = mvs::ReadMvsPointsPly(points_file);
-  const mvs::MvsBounds proxy = ppr::OccupiedVoxelsFromBinary(
-      ReadBytes(proxy_file), VoxelSizeFromReport(proxy_file.parent_path()), proxy_file.string());
-  std::cerr << fmt::format("{}: {} MVS points; {}: {} occupied voxels of {:.2f} mm\n",
-                           points_file.string(), points.size(), proxy_file.string(),
-                           proxy.occupied_centres.size(), proxy.voxel_size * 1e3);
   const auto start = std::chrono::steady_clock::now();
+  clusterer::FolderInputs inputs;
   const messages::ClustersContent content =
-      clusterer::MergeAndCluster(points, proxy, args.cluster.Options(), points_file.stem().string(),
-                                 proxy_file.stem().string());
+      clusterer::ClusterFolderFiles(points_file, proxy_file, args.cluster.Options(), &inputs);
+  if (!inputs.note.empty()) std::cerr << inputs.note << "\n";
+  std::cerr << fmt::format("{}: {} MVS points; {}: {} occupied voxels of {:.2f} mm\n",
+                           points_file.string(), inputs.points, proxy_file.string(),
+                           inputs.occupied_voxels, inputs.voxel_size * 1e3);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::cout << DescribeClusters(content) << fmt::format(" ({:.2f} s)\n", seconds);

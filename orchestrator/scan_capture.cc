@@ -1,0 +1,163 @@
+#include "orchestrator/scan_capture.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+#include "core/util/sha256.h"
+#include "orchestrator/atomic_file.h"
+
+namespace avc::orchestrator {
+namespace {
+
+constexpr double kDegree = M_PI / 180;
+
+bool SamePose(const CaptureRecord& capture, const planner::CellView& view, double tolerance) {
+  for (int i = 0; i < 6; ++i) {
+    if (std::abs(capture.joints[i] - view.joints[i]) > tolerance) return false;
+  }
+  return std::abs(capture.table_angle - view.turntable_angle) <= tolerance;
+}
+
+std::vector<uint8_t> ReadBytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return {};
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::string Extension(int8_t encoding) {
+  switch (encoding) {
+    case avc::image_t::ENCODING_PNG:
+      return ".png";
+    case avc::image_t::ENCODING_JPEG:
+      return ".jpg";
+    default:
+      throw std::invalid_argument(fmt::format(
+          "scan capture: image encoding {} is not stored as a file (ask for PNG or JPEG)",
+          encoding));
+  }
+}
+
+}  // namespace
+
+std::string CaptureImageId(int index) { return fmt::format("view_{:04d}", index); }
+
+ScanCapture::ScanCapture(client::CellClient& cell, std::filesystem::path scan_dir,
+                         ScanRecord& record, std::function<void()> persist,
+                         ScanCaptureOptions options,
+                         std::function<void(const std::string&)> progress)
+    : cell_(cell),
+      scan_dir_(std::move(scan_dir)),
+      record_(record),
+      persist_(std::move(persist)),
+      options_(std::move(options)),
+      progress_(std::move(progress)) {
+  Extension(options_.encoding);  // refuse an unstorable encoding before any motion
+}
+
+std::optional<cv::Mat> ScanCapture::operator()(const planner::CellView& view) {
+  const int index = next_index_++;
+  const auto recorded = std::find_if(record_.captures.begin(), record_.captures.end(),
+                                     [&](const CaptureRecord& c) { return c.index == index; });
+  if (recorded != record_.captures.end()) {
+    if (!SamePose(*recorded, view, options_.pose_tolerance)) {
+      throw std::runtime_error(fmt::format(
+          "{}: the planner now asks for turntable {:.2f} deg at other joints than the recorded "
+          "capture (turntable {:.2f} deg); the scan's options or calibration changed since it "
+          "started, so it cannot be resumed as it is",
+          recorded->image_id, view.turntable_angle / kDegree, recorded->table_angle / kDegree));
+    }
+    const std::vector<uint8_t> bytes = ReadBytes(scan_dir_ / recorded->file);
+    if (!bytes.empty() && Sha256Hex(bytes) == recorded->sha256) {
+      const cv::Mat image = cv::imdecode(bytes, cv::IMREAD_COLOR);
+      if (!image.empty()) {
+        ++reused_;
+        if (progress_) progress_(fmt::format("{} from {}", recorded->image_id, recorded->file));
+        return segmentation::SegmentPlant(image, options_.mask).mask;
+      }
+    }
+    if (progress_) {
+      progress_(fmt::format("{}: {} is missing or damaged; capturing it again", recorded->image_id,
+                            recorded->file));
+    }
+  }
+  try {
+    return TakeLive(view, index);
+  } catch (const client::CommandRefused& refusal) {
+    if (progress_) progress_(fmt::format("{} skipped: {}", CaptureImageId(index), refusal.what()));
+    return std::nullopt;
+  }
+}
+
+cv::Mat ScanCapture::TakeLive(const planner::CellView& view, int index) {
+  const std::string image_id = CaptureImageId(index);
+  cell_.MoveJoints(view.joints, options_.motion_timeout);
+  cell_.TurntableGoto(view.turntable_angle, options_.motion_timeout);
+  const client::CapturedView captured =
+      cell_.Capture(image_id, options_.encoding, options_.capture_timeout);
+  if (captured.image.encoding != options_.encoding) {
+    throw std::runtime_error(fmt::format("{}: the camera sent encoding {} where {} was asked for",
+                                         image_id, captured.image.encoding, options_.encoding));
+  }
+  const std::vector<uint8_t>& bytes = captured.image.data;
+  const cv::Mat image = cv::imdecode(bytes, cv::IMREAD_COLOR);
+  if (image.empty()) {
+    throw std::runtime_error(
+        fmt::format("{}: the camera's {} bytes do not decode as an image", image_id, bytes.size()));
+  }
+  const camera::Intrinsics& k = view.camera.intrinsics;
+  if (image.cols != k.width || image.rows != k.height) {
+    throw std::runtime_error(fmt::format(
+        "{}: the camera delivered {}x{} but the calibration's camera is {}x{}; load the "
+        "calibration of this camera at this resolution",
+        image_id, image.cols, image.rows, k.width, k.height));
+  }
+
+  CaptureRecord capture;
+  capture.index = index;
+  capture.image_id = image_id;
+  capture.file = "images/" + image_id + Extension(options_.encoding);
+  std::filesystem::create_directories(scan_dir_ / "images");
+  WriteFileAtomically(scan_dir_ / capture.file,
+                      {reinterpret_cast<const char*>(bytes.data()), bytes.size()});
+  capture.sha256 = Sha256Hex(bytes);
+  for (int i = 0; i < 6; ++i) capture.joints[i] = view.joints[i];
+  capture.table_angle = view.turntable_angle;
+  std::erase_if(record_.captures, [&](const CaptureRecord& c) { return c.index == index; });
+  record_.captures.push_back(std::move(capture));
+  std::sort(record_.captures.begin(), record_.captures.end(),
+            [](const CaptureRecord& a, const CaptureRecord& b) { return a.index < b.index; });
+  persist_();
+  ++taken_;
+  if (progress_) progress_(fmt::format("{} captured", image_id));
+  return segmentation::SegmentPlant(image, options_.mask).mask;
+}
+
+void MarkPlannedViews(ScanRecord& record, const planner::ActiveVisionResult& result,
+                      double pose_tolerance) {
+  // Captures and planned views are both in capture order; framing frames sit between them. A
+  // frame at exactly a planned view's pose may take that view's marks: same pose, same picture.
+  size_t next_view = 0;
+  for (CaptureRecord& capture : record.captures) {
+    capture.phase = "frame";
+    capture.reason = "framing";
+    capture.kept = false;
+    if (next_view < result.views.size() &&
+        SamePose(capture, result.views[next_view].view, pose_tolerance)) {
+      const planner::PlannedView& planned = result.views[next_view++];
+      capture.phase = planned.phase;
+      capture.reason = planned.reason;
+      capture.kept = planned.kept;
+    }
+  }
+}
+
+}  // namespace avc::orchestrator

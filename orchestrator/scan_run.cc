@@ -1,0 +1,350 @@
+#include "orchestrator/scan_run.h"
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <iterator>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+#include "core/calibration/cell/calibration_yaml.h"
+#include "core/camera/camera_io.h"
+#include "core/dataset/dataset_reader.h"
+#include "core/geometry/mesh_io.h"
+#include "core/traits/traits_writer.h"
+#include "core/util/clock.h"
+#include "orchestrator/atomic_file.h"
+#include "services/builder/build_report.h"
+#include "services/builder/reconstruction_output.h"
+#include "services/clusterer/cluster_folder.h"
+#include "services/clusterer/clusters_ply.h"
+#include "services/planner/calibrated_cell.h"
+#include "services/surfacer/surface_clusters.h"
+
+namespace avc::orchestrator {
+namespace {
+
+namespace fs = std::filesystem;
+using std::chrono::milliseconds;
+
+constexpr char kCalibrationName[] = "calibration.yaml";
+
+std::string ReadText(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " + path.string());
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+ScanState StateOfStage(planner::ActiveVisionStage stage) {
+  switch (stage) {
+    case planner::ActiveVisionStage::kFrame:
+      return ScanState::kFrame;
+    case planner::ActiveVisionStage::kInitialCapture:
+      return ScanState::kInitialCapture;
+    case planner::ActiveVisionStage::kActiveVision:
+      return ScanState::kActiveVision;
+    case planner::ActiveVisionStage::kPruneViews:
+      return ScanState::kPruneViews;
+  }
+  throw std::logic_error("unknown active vision stage");
+}
+
+// One run of the scan: the record, the machine and what the steps hand each other.
+class ScanRun {
+ public:
+  ScanRun(client::CellClient& cell, const ScanRunOptions& options,
+          const std::function<void(const ScanProgress&)>& progress)
+      : cell_(cell),
+        options_(options),
+        progress_(progress),
+        dir_(options.scan_dir),
+        model_dir_(dir_ / "model"),
+        started_us_(clock_.NowMicros()) {}
+
+  ScanOutcome Run() {
+    OpenRecord();
+    outcome_.scan_dir = dir_;
+    if (machine_.state() == ScanState::kDone || machine_.state() == ScanState::kAborted) {
+      outcome_.state = machine_.state();
+      Report(fmt::format("scan already {}", StateName(machine_.state())));
+      return outcome_;
+    }
+    try {
+      if (machine_.interrupted()) {
+        Enter(*machine_.interrupted(), "resumed");
+      } else if (machine_.state() == ScanState::kIdle) {
+        Enter(ScanState::kCheckDevices, "");
+      } else {
+        Report("resuming in " + std::string(StateName(machine_.state())));
+      }
+      while (machine_.state() != ScanState::kDone) Step(machine_.state());
+      record_.EndPhase(clock_.NowMicros());
+      Persist();
+    } catch (const std::exception& error) {
+      Fault(error.what());
+    }
+    outcome_.state = machine_.state();
+    return outcome_;
+  }
+
+ private:
+  void OpenRecord() {
+    fs::create_directories(dir_);
+    if (fs::exists(dir_ / "scan.json")) {
+      record_ = LoadScanRecord(dir_);
+      machine_ = ScanStateMachine::Restore(record_.state, record_.interrupted);
+      return;
+    }
+    record_.scan_id =
+        options_.scan_id.empty() ? fs::absolute(dir_).filename().string() : options_.scan_id;
+    record_.created_utime = clock_.NowMicros();
+    record_.options = {{"calibration_file", options_.calibration_file.string()},
+                       {"max_views", options_.planner.max_views},
+                       {"levels", options_.planner.levels},
+                       {"views_per_level", options_.planner.views_per_level}};
+    Persist();
+  }
+
+  void Step(ScanState state) {
+    switch (state) {
+      case ScanState::kCheckDevices:
+        PowerArm();
+        return Enter(ScanState::kLoadCalibration, "");
+      case ScanState::kLoadCalibration:
+        EnsureCalibration();
+        return Enter(ScanState::kFrame, "");
+      case ScanState::kFrame:
+      case ScanState::kInitialCapture:
+      case ScanState::kActiveVision:
+      case ScanState::kPruneViews:
+        CaptureViews();
+        return Enter(ScanState::kBuild, "");
+      case ScanState::kBuild:
+        Build();
+        return Enter(ScanState::kMergeCluster, "");
+      case ScanState::kMergeCluster:
+        MergeCluster();
+        return Enter(ScanState::kSurface, "");
+      case ScanState::kSurface:
+        Surface();
+        return Enter(ScanState::kTraits, "");
+      case ScanState::kTraits:
+        Traits();
+        return Enter(ScanState::kReport, "");
+      case ScanState::kReport:
+        WriteReport();
+        return Enter(ScanState::kDone, "");
+      default:
+        throw std::logic_error(fmt::format("no step for state {}", StateName(state)));
+    }
+  }
+
+  // Starts `next` once the services it needs are READY; persisted before any of its work.
+  void Enter(ScanState next, const std::string& detail) {
+    const std::vector<std::string>& services = RequiredServices(next);
+    if (!services.empty()) {
+      Report(fmt::format("{}: waiting for {}", StateName(next), fmt::join(services, ", ")));
+      cell_.WaitReady(services, options_.ready_timeout);
+    }
+    const int64_t now = clock_.NowMicros();
+    if (const std::string refused = machine_.TryTransition(next, now, detail); !refused.empty()) {
+      throw std::logic_error(refused);
+    }
+    record_.state = next;
+    record_.interrupted.reset();
+    record_.fault.clear();
+    record_.detail = detail;
+    if (IsWorkingState(next)) record_.StartPhase(next, now);
+    Persist();
+    Report(detail);
+  }
+
+  void Fault(const std::string& reason) {
+    const int64_t now = clock_.NowMicros();
+    const ScanState was = machine_.state();
+    std::string fault = reason;
+    if (machine_.TryTransition(ScanState::kFault, now, reason).empty()) {
+      record_.state = ScanState::kFault;
+      record_.interrupted = machine_.interrupted();
+      record_.fault = reason;
+      record_.EndPhase(now);
+      try {
+        Persist();
+      } catch (const std::exception& error) {
+        fault += fmt::format(" (and scan.json could not be saved: {})", error.what());
+      }
+    }
+    outcome_.fault = fmt::format("{} failed: {}", StateName(was), fault);
+    Report(outcome_.fault);
+  }
+
+  void Persist() { SaveScanRecord(record_, dir_); }
+
+  void Report(const std::string& detail) {
+    if (!progress_) return;
+    ScanProgress p;
+    p.state = machine_.state();
+    p.detail = detail;
+    p.captures = static_cast<int>(record_.captures.size());
+    const ScanState on_line = machine_.interrupted().value_or(machine_.state());
+    p.fraction =
+        IsWorkingState(on_line) || on_line == ScanState::kIdle || on_line == ScanState::kDone
+            ? MainLineFraction(on_line)
+            : 0;
+    p.elapsed_s = (clock_.NowMicros() - started_us_) * 1e-6;
+    progress_(p);
+  }
+
+  void PowerArm() {
+    cell_.Robot(avc::robot_command_t::KIND_POWER_ON, options_.ready_timeout);
+    cell_.Robot(avc::robot_command_t::KIND_BRAKE_RELEASE, options_.ready_timeout);
+  }
+
+  // The scan keeps its own copy of the calibration it was planned with; a resume uses it.
+  void EnsureCalibration() {
+    if (calibration_) return;
+    const fs::path kept = dir_ / kCalibrationName;
+    const fs::path& given = options_.calibration_file;
+    if (!given.empty() && fs::exists(kept) && ReadText(given) != ReadText(kept)) {
+      throw std::runtime_error(
+          fmt::format("{} differs from the calibration this scan started with ({}); resume without "
+                      "--calibration, or start a new scan",
+                      given.string(), kept.string()));
+    }
+    if (!fs::exists(kept)) {
+      if (given.empty()) {
+        throw std::runtime_error("no calibration: give the cell's calibration.yaml");
+      }
+      WriteFileAtomically(kept, ReadText(given));
+    }
+    calibration_ = calibration::LoadCalibration(kept);
+  }
+
+  void CaptureViews() {
+    EnsureCalibration();
+    PowerArm();  // after a restart of the arm's driver or controller
+    const sim::CellTruth model = planner::CellModelFromCalibration(*calibration_);
+    ScanCapture capture(
+        cell_, dir_, record_, [this] { Persist(); }, options_.capture,
+        [this](const std::string& line) { Report(line); });
+    const planner::ActiveVisionResult result = planner::RunActiveVision(
+        model, [&](const planner::CellView& view) { return capture(view); }, options_.planner,
+        [&](planner::ActiveVisionStage stage) {
+          // A resumed scan replays the stages it had passed: only later ones are entered.
+          const ScanState state = StateOfStage(stage);
+          if (Row(state).step > Row(machine_.state()).step) Enter(state, "");
+        });
+    if (machine_.state() != ScanState::kPruneViews) Enter(ScanState::kPruneViews, "");
+    outcome_.captured_now += capture.taken();
+    outcome_.reused += capture.reused();
+    MarkPlannedViews(record_, result, options_.capture.pose_tolerance);
+    record_.options["planner_notes"] = result.notes;
+    record_.options["patches"] = result.patches;
+    record_.options["failing_patches"] = result.failing_patches;
+    WriteKeptCameras();
+    Persist();
+  }
+
+  // cameras.json and colmap/ list the kept views, as the calibration places them.
+  void WriteKeptCameras() {
+    std::vector<camera::NamedCamera> cameras;
+    for (const CaptureRecord& c : record_.captures) {
+      if (!c.kept) continue;
+      kinematics::JointVector q;
+      for (int i = 0; i < 6; ++i) q[i] = c.joints[i];
+      cameras.push_back(
+          {fs::path(c.file).filename().string(), calibration_->CameraAtJoints(q, c.table_angle)});
+    }
+    if (cameras.size() < 2) {
+      throw std::runtime_error(
+          fmt::format("only {} usable views were captured; the reconstruction needs 2 or more",
+                      cameras.size()));
+    }
+    camera::WriteCamerasJson(dir_ / "cameras.json", cameras);
+    camera::WriteColmapText(dir_ / "colmap", cameras);
+  }
+
+  void Build() {
+    dataset::ViewSet set = dataset::ReadDataset(dir_);
+    const builder::Reconstruction reconstruction = builder::Reconstruct(
+        set, options_.build, [this](const std::string& stage, size_t done, size_t total) {
+          if (done == total) Report(fmt::format("{} {}/{}", stage, done, total));
+        });
+    const builder::BuildReport report =
+        builder::MakeBuildReport(reconstruction, options_.build.method, set.ground_truth_mesh);
+    builder::WriteReconstruction(model_dir_, set, reconstruction, report, /*overwrite=*/true);
+  }
+
+  void MergeCluster() {
+    clusters_ = clusterer::ClusterFolderFiles(model_dir_ / "points.ply", model_dir_ / "ppr.bt",
+                                              options_.cluster);
+    if (!clusters_->problem.empty()) {
+      throw std::runtime_error("the points could not be clustered: " + clusters_->problem);
+    }
+    clusterer::WriteClustersPly(model_dir_ / "clusters.ply", *clusters_);
+  }
+
+  void Surface() {
+    if (!clusters_) MergeCluster();  // resumed here: the same files give the same clusters
+    surface_ = surfacer::SurfaceClusters(*clusters_);
+    if (!surface_->problem.empty()) {
+      throw std::runtime_error("no surface could be made: " + surface_->problem);
+    }
+    geometry::WriteMeshPly(model_dir_ / "mesh.ply", surface_->mesh);
+  }
+
+  void Traits() {
+    if (!surface_) Surface();
+    traits::WriteTraitFiles(surface_->traits, model_dir_.string());
+  }
+
+  void WriteReport() {
+    nlohmann::ordered_json report;
+    report["scan_id"] = record_.scan_id;
+    report["scan_dir"] = fs::absolute(dir_).string();
+    nlohmann::ordered_json phases = nlohmann::ordered_json::array();
+    for (const PhaseTiming& phase : record_.phases) {
+      const int64_t end = phase.end_utime ? phase.end_utime : clock_.NowMicros();
+      phases.push_back({{"state", phase.state}, {"seconds", (end - phase.start_utime) * 1e-6}});
+    }
+    report["phases"] = phases;
+    int kept = 0;
+    for (const CaptureRecord& c : record_.captures) kept += c.kept;
+    report["images"] = {{"captured", record_.captures.size()}, {"kept", kept}};
+    report["planner"] = record_.options;
+    report["build"] = nlohmann::json::parse(ReadText(model_dir_ / "build.json"));
+    report["traits"] = nlohmann::json::parse(ReadText(model_dir_ / "traits.json"));
+    report["files"] = {"images/",          "cameras.json",       "colmap/",
+                       kCalibrationName,   "model/ppr.bt",       "model/points.ply",
+                       "model/merged.ply", "model/clusters.ply", "model/mesh.ply",
+                       "model/traits.csv", "model/traits.json"};
+    WriteFileAtomically(dir_ / "report.json", report.dump(2) + "\n");
+  }
+
+  client::CellClient& cell_;
+  const ScanRunOptions& options_;
+  const std::function<void(const ScanProgress&)>& progress_;
+  fs::path dir_;
+  fs::path model_dir_;
+  SystemClock clock_;
+  int64_t started_us_;
+  ScanRecord record_;
+  ScanStateMachine machine_;
+  ScanOutcome outcome_;
+  std::optional<calibration::CellCalibration> calibration_;
+  std::optional<messages::ClustersContent> clusters_;
+  std::optional<surfacer::SurfacerResult> surface_;
+};
+
+}  // namespace
+
+ScanOutcome RunScan(client::CellClient& cell, const ScanRunOptions& options,
+                    const std::function<void(const ScanProgress&)>& progress) {
+  ScanRun run(cell, options, progress);
+  return run.Run();
+}
+
+}  // namespace avc::orchestrator

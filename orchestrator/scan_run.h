@@ -1,0 +1,72 @@
+#pragma once
+
+// One scan from the cell to the plant's traits, walked through the scan state machine
+// (scan_states.h) and persisted in scan.json after every step (scan_record.h), so running it
+// again on the same directory resumes where it stopped, without capturing again what is on disk.
+//
+//   CHECK_DEVICES     the drivers READY, the arm powered and its brakes released
+//   LOAD_CALIBRATION  calibration.yaml read, checked against the camera, kept in the scan
+//   FRAME .. PRUNE_VIEWS  Algorithm 1 through the drivers (scan_capture.h); the planner is
+//                     deterministic, so a resumed scan replays it from the recorded images
+//   BUILD             masks, plant proxy and MVS on the kept views   -> model/ppr.bt, points.ply
+//   MERGE_CLUSTER     merging and Algorithm 2 from those files        -> model/clusters.ply
+//   SURFACE, TRAITS   Algorithm 3 and the traits                     -> model/mesh.ply, traits.*
+//   REPORT            report.json: phases and their times, views, notes, the model's figures
+//
+// The scan directory: scan.json, calibration.yaml, images/, cameras.json and colmap/ (the kept
+// views' cameras from the calibration, with lens distortion), model/ (what `avc reconstruct`
+// writes, with undistorted cameras of its own) and report.json.
+//
+// A failing step (a device that stops answering, a full disk, a calibration of another camera)
+// puts the scan in FAULT with the reason, keeps everything captured, and returns; the same call
+// resumes it.
+
+#include <chrono>
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include "drivers/client/cell_client.h"
+#include "orchestrator/scan_capture.h"
+#include "orchestrator/scan_record.h"
+#include "services/builder/reconstruction.h"
+#include "services/clusterer/merge_and_cluster.h"
+#include "services/planner/active_vision.h"
+
+namespace avc::orchestrator {
+
+struct ScanRunOptions {
+  std::filesystem::path scan_dir;          // created; holds scan.json once started
+  std::string scan_id;                     // default: the directory's name
+  std::filesystem::path calibration_file;  // default: the scan's own calibration.yaml
+  planner::ActiveVisionOptions planner;
+  ScanCaptureOptions capture;
+  builder::ReconstructOptions build;
+  clusterer::ClustererOptions cluster;
+  std::chrono::milliseconds ready_timeout{30000};
+};
+
+struct ScanProgress {
+  ScanState state = ScanState::kIdle;
+  std::string detail;
+  int captures = 0;      // images in the scan so far
+  double fraction = 0;   // of the main line
+  double elapsed_s = 0;  // since this run started
+};
+
+struct ScanOutcome {
+  ScanState state = ScanState::kIdle;  // DONE, or FAULT with `fault`
+  std::string fault;
+  int captured_now = 0;  // images taken through the cell in this run
+  int reused = 0;        // images answered from the scan directory
+  std::filesystem::path scan_dir;
+};
+
+// Runs or resumes the scan in options.scan_dir. `progress` hears every state change and
+// capture. Never throws for a failing step (the outcome says FAULT and why); throws
+// std::runtime_error only when the scan directory itself cannot be used (unreadable scan.json,
+// no calibration given for a new scan).
+ScanOutcome RunScan(client::CellClient& cell, const ScanRunOptions& options,
+                    const std::function<void(const ScanProgress&)>& progress = {});
+
+}  // namespace avc::orchestrator

@@ -1,0 +1,163 @@
+// The scan's capture step as the orchestrator runs it: the planner's views taken through the
+// simulated cell and every real driver (separate processes on the real bus), each image kept in
+// the scan directory and scan.json. A restarted orchestrator (new client, record read back from
+// disk) gets the views it already has from their files with no capture, recaptures only a
+// deleted one, refuses a plan that contradicts the record, and skips a view the arm refuses.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <numbers>
+#include <opencv2/core.hpp>
+#include <stdexcept>
+#include <vector>
+
+#include "bench/devices/cell_processes.h"
+#include "core/bus/bus.h"
+#include "core/bus/bus_options.h"
+#include "drivers/client/cell_client.h"
+#include "orchestrator/scan_capture.h"
+#include "orchestrator/scan_record.h"
+#include "services/planner/cell_view.h"
+#include "sim/cell/view_selection.h"
+#include "sim/dataset/render_dataset.h"
+#include "sim/emulators/cell/simulated_cell.h"
+#include "tests/support/test_support.h"
+
+namespace avc::orchestrator {
+namespace {
+
+namespace fs = std::filesystem;
+using std::chrono::milliseconds;
+
+constexpr int kWidth = 320, kHeight = 240;
+
+// Views around the plant at one height, as the planner realises them in the nominal cell.
+std::vector<planner::CellView> ViewsAround(const sim::CellTruth& model, int count) {
+  std::vector<planner::CellView> views;
+  const Eigen::Vector3d target(0, 0, 0.08);
+  kinematics::JointVector joints = sim::StartJoints(model);
+  for (int n = 0; n < count; ++n) {
+    const double azimuth = sim::RobotAzimuth(model) + n * 2 * std::numbers::pi / count;
+    const Eigen::Vector3d eye =
+        sim::ViewpointOnSphere(target, 0.55, 30 * std::numbers::pi / 180, azimuth);
+    const auto view = planner::RealiseView(model, eye, target, {}, joints);
+    if (!view) throw std::runtime_error("test view unreachable");
+    joints = view->joints;
+    views.push_back(*view);
+  }
+  return views;
+}
+
+size_t PlantPixels(const std::optional<cv::Mat>& mask) {
+  return mask ? static_cast<size_t>(cv::countNonZero(*mask)) : 0;
+}
+
+TEST(ScanCaptureMultiproc, KeepsEveryImageAndResumesWithoutCapturingAgain) {
+  testing::TempDir dir("avc-scan-capture");
+  const fs::path scan_dir = dir.path() / "scan";
+  fs::create_directories(scan_dir);
+  const bus::BusOptions bus_options = bus::ResolveBusOptions({}, "scan-capture-test");
+  bench::CellProcessOptions options;
+  options.avc_binary = testing::Executable("avc");
+  options.work_dir = dir.path();
+  options.lcm_url = bus_options.control_url;
+  options.bulk_url = bus_options.bulk_url;
+  options.cell = bus_options.cell;
+  options.time_scale = 10;
+  options.triangles = 6000;
+  options.width = kWidth;
+  options.height = kHeight;
+  options.png = true;
+  bench::CellProcesses cell(options);
+
+  sim::RenderDatasetOptions model_options;
+  model_options.width = kWidth;
+  model_options.height = kHeight;
+  const sim::CellTruth model = sim::MakeCell(model_options);
+  const std::vector<planner::CellView> views = ViewsAround(model, 4);
+
+  bus::Bus bus(bus_options);
+  bus::EventLoop loop;
+  bus.AttachTo(loop);
+  try {
+    std::vector<cv::Mat> first_masks;
+    {
+      client::CellClient client(bus, loop, "avc-orchestrator");
+      client.WaitReady({"avc-sim", "avc-robot", "avc-turntable", "avc-camera"},
+                       milliseconds(20000));
+      client.Robot(avc::robot_command_t::KIND_POWER_ON, milliseconds(10000));
+      client.Robot(avc::robot_command_t::KIND_BRAKE_RELEASE, milliseconds(10000));
+
+      ScanRecord record;
+      record.scan_id = "capture-test";
+      int saves = 0;
+      ScanCapture capture(client, scan_dir, record, [&] {
+        SaveScanRecord(record, scan_dir);
+        ++saves;
+      });
+      for (int n = 0; n < 3; ++n) {
+        const std::optional<cv::Mat> mask = capture(views[n]);
+        ASSERT_TRUE(mask.has_value());
+        EXPECT_EQ(mask->cols, kWidth);
+        EXPECT_GT(PlantPixels(mask), 0.01 * kWidth * kHeight) << "view " << n;
+        first_masks.push_back(*mask);
+      }
+      EXPECT_EQ(capture.taken(), 3);
+      EXPECT_EQ(saves, 3);
+
+      // A joint target outside the arm's limits is refused by the driver: skipped, not fatal.
+      planner::CellView impossible = views[3];
+      impossible.joints[1] = 7.0;
+      EXPECT_FALSE(capture(impossible).has_value());
+      EXPECT_EQ(record.captures.size(), 3u);
+    }
+    EXPECT_EQ(sim::ReadTruthLog(cell.truth_log()).size(), 3u);
+
+    // What a restarted orchestrator finds on disk.
+    ScanRecord record = LoadScanRecord(scan_dir);
+    ASSERT_EQ(record.captures.size(), 3u);
+    for (const CaptureRecord& c : record.captures) {
+      EXPECT_TRUE(fs::exists(scan_dir / c.file)) << c.file;
+      EXPECT_EQ(c.sha256.size(), 64u);
+    }
+    EXPECT_EQ(record.captures[1].image_id, "view_0001");
+    fs::remove(scan_dir / record.captures[1].file);
+
+    client::CellClient client(bus, loop, "avc-orchestrator");
+    client.WaitReady({"avc-robot", "avc-turntable", "avc-camera"}, milliseconds(20000));
+    ScanCapture resumed(client, scan_dir, record, [&] { SaveScanRecord(record, scan_dir); });
+    const std::optional<cv::Mat> again = resumed(views[0]);
+    ASSERT_TRUE(again.has_value());
+    EXPECT_EQ(cv::norm(*again, first_masks[0], cv::NORM_INF), 0) << "same file, same mask";
+    EXPECT_GT(PlantPixels(resumed(views[1])), 0u);  // deleted: captured again
+    EXPECT_GT(PlantPixels(resumed(views[2])), 0u);
+    EXPECT_GT(PlantPixels(resumed(views[3])), 0u);  // new
+    EXPECT_EQ(resumed.reused(), 2);
+    EXPECT_EQ(resumed.taken(), 2);
+    EXPECT_EQ(sim::ReadTruthLog(cell.truth_log()).size(), 5u) << "only two more captures";
+    const ScanRecord final_record = LoadScanRecord(scan_dir);
+    ASSERT_EQ(final_record.captures.size(), 4u);
+    EXPECT_TRUE(VerifyCaptures(final_record, scan_dir).empty());
+
+    // A plan that no longer matches the record stops the scan instead of mixing two plans.
+    ScanCapture contradicted(client, scan_dir, record, [] {});
+    EXPECT_THROW(
+        {
+          try {
+            contradicted(views[2]);
+          } catch (const std::runtime_error& error) {
+            EXPECT_NE(std::string(error.what()).find("cannot be resumed"), std::string::npos)
+                << error.what();
+            throw;
+          }
+        },
+        std::runtime_error);
+  } catch (const std::exception& error) {
+    FAIL() << error.what() << "\n" << cell.LogTails();
+  }
+  EXPECT_TRUE(cell.Exited().empty()) << cell.LogTails();
+}
+
+}  // namespace
+}  // namespace avc::orchestrator
