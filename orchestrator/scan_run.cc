@@ -80,11 +80,21 @@ class ScanRun {
       } else {
         Report("resuming in " + std::string(StateName(machine_.state())));
       }
-      while (machine_.state() != ScanState::kDone) Step(machine_.state());
-      record_.EndPhase(clock_.NowMicros());
-      Persist();
+      while (machine_.state() != ScanState::kDone && !StopRequested()) Step(machine_.state());
+      if (StopRequested()) {
+        Interrupt(ScanState::kPaused, "stop requested");
+      } else {
+        record_.EndPhase(clock_.NowMicros());
+        Persist();
+      }
     } catch (const std::exception& error) {
-      Fault(error.what());
+      // A stop makes the step in progress fail (its waits end): that is a pause, not a fault.
+      if (StopRequested()) {
+        Interrupt(ScanState::kPaused,
+                  std::string("stop requested during the step: ") + error.what());
+      } else {
+        Interrupt(ScanState::kFault, error.what());
+      }
     }
     outcome_.state = machine_.state();
     return outcome_;
@@ -162,23 +172,27 @@ class ScanRun {
     Report(detail);
   }
 
-  void Fault(const std::string& reason) {
+  bool StopRequested() const { return options_.stop_requested && options_.stop_requested(); }
+
+  // PAUSED or FAULT from the working state in progress, persisted, resumable.
+  void Interrupt(ScanState to, const std::string& reason) {
     const int64_t now = clock_.NowMicros();
     const ScanState was = machine_.state();
-    std::string fault = reason;
-    if (machine_.TryTransition(ScanState::kFault, now, reason).empty()) {
-      record_.state = ScanState::kFault;
+    std::string why = reason;
+    if (machine_.TryTransition(to, now, reason).empty()) {
+      record_.state = to;
       record_.interrupted = machine_.interrupted();
-      record_.fault = reason;
+      record_.fault = to == ScanState::kFault ? reason : "";
+      record_.detail = reason;
       record_.EndPhase(now);
       try {
         Persist();
       } catch (const std::exception& error) {
-        fault += fmt::format(" (and scan.json could not be saved: {})", error.what());
+        why += fmt::format(" (and scan.json could not be saved: {})", error.what());
       }
     }
-    outcome_.fault = fmt::format("{} failed: {}", StateName(was), fault);
-    Report(outcome_.fault);
+    if (to == ScanState::kFault) outcome_.fault = fmt::format("{} failed: {}", StateName(was), why);
+    Report(to == ScanState::kFault ? outcome_.fault : fmt::format("paused in {}", StateName(was)));
   }
 
   void Persist() { SaveScanRecord(record_, dir_); }

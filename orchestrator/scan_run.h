@@ -18,8 +18,8 @@
 // writes, with undistorted cameras of its own) and report.json.
 //
 // A failing step (a device that stops answering, a full disk, a calibration of another camera)
-// puts the scan in FAULT with the reason, keeps everything captured, and returns; the same call
-// resumes it.
+// puts the scan in FAULT with the reason, keeps everything captured, and returns; a stop request
+// puts it in PAUSED. The same call resumes either.
 
 #include <chrono>
 #include <filesystem>
@@ -44,6 +44,9 @@ struct ScanRunOptions {
   builder::ReconstructOptions build;
   clusterer::ClustererOptions cluster;
   std::chrono::milliseconds ready_timeout{30000};
+  // Polled between steps and when a step fails: true (e.g. after SIGTERM) pauses the scan
+  // instead of faulting it. Optional.
+  std::function<bool()> stop_requested;
 };
 
 struct ScanProgress {
@@ -55,7 +58,7 @@ struct ScanProgress {
 };
 
 struct ScanOutcome {
-  ScanState state = ScanState::kIdle;  // DONE, or FAULT with `fault`
+  ScanState state = ScanState::kIdle;  // DONE, PAUSED (stop requested), or FAULT with `fault`
   std::string fault;
   int captured_now = 0;  // images taken through the cell in this run
   int reused = 0;        // images answered from the scan directory

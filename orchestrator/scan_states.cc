@@ -16,14 +16,12 @@ constexpr int kStateCount = static_cast<int>(S::kAborted) + 1;
 const std::string kRobot = "avc-robot";
 const std::string kTurntable = "avc-turntable";
 const std::string kCamera = "avc-camera";
-const std::string kCalibrator = "avc-calibrator";
-const std::string kBuilder = "avc-builder";
-const std::string kClusterer = "avc-clusterer";
-const std::string kSurfacer = "avc-surfacer";
 
 std::vector<StateRow> BuildTable() {
+  // The processing states (BUILD to REPORT) run the builder, clusterer and surfacer libraries in
+  // the scan's own process (orchestrator/scan_run.h), so only the devices are waited for; when
+  // they move onto the avc-builder/-clusterer/-surfacer services, those names go here.
   const std::vector<std::string> cell = {kRobot, kTurntable, kCamera};
-  const std::vector<std::string> capture = {kRobot, kTurntable, kCamera, kCalibrator, kBuilder};
   // Rows in enum order, columns aligned by hand. `next` holds each state's own successors; the
   // edges all working states share (interruptions, resume) are added below from the `working`
   // column, so they are stated once.
@@ -34,24 +32,24 @@ std::vector<StateRow> BuildTable() {
      "nothing running; a new scan or a persisted one about to resume"},
     {S::kCheckDevices,    "CHECK_DEVICES",    true,   1, cell,          {S::kCalibrate,
                                                                          S::kLoadCalibration},
-     "robot, turntable and camera answer and are homed"},
+     "robot, turntable and camera READY; the arm powered, its brakes released"},
     {S::kCalibrate,       "CALIBRATE",        true,   2, cell,          {S::kFrame},
      "collect board views and solve intrinsics, hand-eye and axis"},
-    {S::kLoadCalibration, "LOAD_CALIBRATION", true,   2, {kCalibrator}, {S::kFrame},
-     "load and check a calibration made earlier"},
-    {S::kFrame,           "FRAME",            true,   3, capture,       {S::kInitialCapture},
-     "find the plant and fit the view sphere around it"},
-    {S::kInitialCapture,  "INITIAL_CAPTURE",  true,   4, capture,       {S::kActiveVision},
-     "capture the initial 3x10 views; carve the proxy"},
-    {S::kActiveVision,    "ACTIVE_VISION",    true,   5, capture,       {S::kPruneViews},
-     "score clusters, plan and capture next-best views"},
-    {S::kPruneViews,      "PRUNE_VIEWS",      true,   6, {kBuilder},    {S::kBuild},
+    {S::kLoadCalibration, "LOAD_CALIBRATION", true,   2, {},            {S::kFrame},
+     "load calibration.yaml made earlier; the scan keeps its copy"},
+    {S::kFrame,           "FRAME",            true,   3, cell,          {S::kInitialCapture},
+     "frame the plant from live views at the first height"},
+    {S::kInitialCapture,  "INITIAL_CAPTURE",  true,   4, cell,          {S::kActiveVision},
+     "the 3x10 orbit (each height framed first); carve the plant proxy"},
+    {S::kActiveVision,    "ACTIVE_VISION",    true,   5, cell,          {S::kPruneViews},
+     "score the proxy's surface patches; capture next-best views"},
+    {S::kPruneViews,      "PRUNE_VIEWS",      true,   6, {},            {S::kBuild},
      "drop redundant views"},
-    {S::kBuild,           "BUILD",            true,   7, {kBuilder},    {S::kMergeCluster},
-     "multi-view stereo points from the kept views"},
-    {S::kMergeCluster,    "MERGE_CLUSTER",    true,   8, {kClusterer},  {S::kSurface},
+    {S::kBuild,           "BUILD",            true,   7, {},            {S::kMergeCluster},
+     "masks, plant proxy and multi-view stereo from the kept views"},
+    {S::kMergeCluster,    "MERGE_CLUSTER",    true,   8, {},            {S::kSurface},
      "merge points into the proxy and cluster them"},
-    {S::kSurface,         "SURFACE",          true,   9, {kSurfacer},   {S::kTraits},
+    {S::kSurface,         "SURFACE",          true,   9, {},            {S::kTraits},
      "triangulate the clusters into one mesh"},
     {S::kTraits,          "TRAITS",           true,  10, {},            {S::kReport},
      "measure area, height and leaf angles from the mesh"},

@@ -17,6 +17,8 @@ TempDir::TempDir(const std::string& prefix) {
 }
 
 TempDir::~TempDir() {
+  // AVC_KEEP_TEST_DIRS=1 keeps every test's files for a look after a failure.
+  if (const char* keep = std::getenv("AVC_KEEP_TEST_DIRS"); keep != nullptr && *keep == '1') return;
   std::error_code ignored;
   std::filesystem::remove_all(path_, ignored);
 }

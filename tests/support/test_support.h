@@ -9,7 +9,8 @@
 
 namespace avc::testing {
 
-// A fresh, empty directory under the system temp dir, removed by the destructor.
+// A fresh, empty directory under the system temp dir, removed by the destructor (kept when
+// AVC_KEEP_TEST_DIRS=1).
 class TempDir {
  public:
   explicit TempDir(const std::string& prefix = "avc-test");

@@ -28,5 +28,6 @@ void RegisterBuilder(CLI::App& root, int* exit_code);
 void RegisterCluster(CLI::App& root, int* exit_code);
 void RegisterClusterer(CLI::App& root, int* exit_code);
 void RegisterSurfacer(CLI::App& root, int* exit_code);
+void RegisterScan(CLI::App& root, int* exit_code);
 
 }  // namespace avc::cli

@@ -54,6 +54,7 @@ int main(int argc, char** argv) {
   avc::cli::RegisterCluster(app, &exit_code);
   avc::cli::RegisterClusterer(app, &exit_code);
   avc::cli::RegisterSurfacer(app, &exit_code);
+  avc::cli::RegisterScan(app, &exit_code);
   ShortenListings(app);
   try {
     app.parse(argc, argv);

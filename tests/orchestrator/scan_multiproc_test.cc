@@ -1,0 +1,175 @@
+// `avc scan` as a lab runs it, against the simulated cell and every real driver (separate
+// processes on the real bus): a SIGTERM pauses the scan (exit 4, PAUSED in scan.json), a resume
+// killed with SIGKILL halfway leaves a consistent scan directory, and a second resume finishes
+// it (DONE): mesh, traits and report written, every image on disk exactly once and intact, and
+// no view captured twice beyond the one a kill can catch between capture and record.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <csignal>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "bench/devices/cell_processes.h"
+#include "core/bus/bus_options.h"
+#include "core/calibration/cell/calibration_yaml.h"
+#include "core/launch/child_process.h"
+#include "orchestrator/scan_record.h"
+#include "sim/dataset/render_dataset.h"
+#include "sim/emulators/cell/simulated_cell.h"
+#include "tests/support/test_support.h"
+
+namespace avc::orchestrator {
+namespace {
+
+namespace fs = std::filesystem;
+using std::chrono::milliseconds;
+
+constexpr int kWidth = 1280, kHeight = 960;
+
+// The calibration a perfect `avc calibrate` would give in the nominal simulated cell.
+void WriteNominalCalibration(const fs::path& path) {
+  sim::RenderDatasetOptions options;
+  options.width = kWidth;
+  options.height = kHeight;
+  const sim::CellTruth cell = sim::MakeCell(options);
+  calibration::CellCalibration calibration;
+  calibration.intrinsics = cell.intrinsics;
+  calibration.T_flange_cam = cell.T_flange_cam;
+  calibration.T_base_table = cell.T_base_table;
+  calibration.dh = cell.dh;
+  calibration.note = "nominal simulated cell (test)";
+  calibration::SaveCalibration(calibration, path);
+}
+
+class ScanProcess {
+ public:
+  ScanProcess(const std::vector<std::string>& args, const bus::BusOptions& bus,
+              const fs::path& log) {
+    launch::SpawnSpec spec;
+    spec.argv = {testing::Executable("avc").string(), "scan"};
+    spec.argv.insert(spec.argv.end(), args.begin(), args.end());
+    spec.argv.insert(spec.argv.end(),
+                     {"--lcm-url", bus.control_url, "--bulk-url", bus.bulk_url, "--cell", bus.cell,
+                      "--max-views", "14", "--views-per-height", "6"});
+    spec.log_file = log.string();
+    child_.emplace(launch::ChildProcess::Spawn(spec));
+  }
+  launch::ChildProcess& child() { return *child_; }
+
+ private:
+  std::optional<launch::ChildProcess> child_;
+};
+
+size_t RecordedCaptures(const fs::path& scan_dir) {
+  try {
+    return LoadScanRecord(scan_dir).captures.size();
+  } catch (const std::exception&) {
+    return 0;  // not written yet
+  }
+}
+
+// Polls scan.json (written atomically) until it records `count` captures.
+bool WaitForCaptures(const fs::path& scan_dir, size_t count, launch::ChildProcess& scan) {
+  for (int i = 0; i < 1200; ++i) {
+    if (RecordedCaptures(scan_dir) >= count) return true;
+    if (scan.WaitFor(milliseconds(100)).has_value()) return false;  // it ended first
+  }
+  return false;
+}
+
+TEST(ScanMultiproc, PausedKilledAndResumedScanFinishesWithEveryImageOnce) {
+  testing::TempDir dir("avc-scan-mp");
+  const fs::path scan_dir = dir.path() / "plant";
+  const fs::path calibration = dir.path() / "calibration.yaml";
+  WriteNominalCalibration(calibration);
+  const bus::BusOptions bus_options = bus::ResolveBusOptions({}, "scan-test");
+  bench::CellProcessOptions options;
+  options.avc_binary = testing::Executable("avc");
+  options.work_dir = dir.path();
+  options.lcm_url = bus_options.control_url;
+  options.bulk_url = bus_options.bulk_url;
+  options.cell = bus_options.cell;
+  options.time_scale = 20;
+  options.triangles = 8000;
+  options.width = kWidth;
+  options.height = kHeight;
+  options.png = true;
+  options.extra_sim_args = {"--nominal-cell"};
+  bench::CellProcesses cell(options);
+  const fs::path log = dir.path() / "scan.log";
+
+  {  // SIGTERM: paused, resumable.
+    ScanProcess scan({scan_dir.string(), "--calibration", calibration.string()}, bus_options, log);
+    ASSERT_TRUE(WaitForCaptures(scan_dir, 3, scan.child()))
+        << testing::ReadFile(log) << cell.LogTails();
+    scan.child().Signal(SIGTERM);
+    const auto status = scan.child().WaitFor(milliseconds(30000));
+    ASSERT_TRUE(status.has_value()) << "avc scan ignored SIGTERM\n" << testing::ReadFile(log);
+    EXPECT_TRUE(WIFEXITED(*status) && WEXITSTATUS(*status) == 4)
+        << launch::DescribeWaitStatus(*status) << "\n"
+        << testing::ReadFile(log);
+    const ScanRecord paused = LoadScanRecord(scan_dir);
+    EXPECT_EQ(paused.state, ScanState::kPaused);
+    ASSERT_TRUE(paused.interrupted.has_value());
+    EXPECT_TRUE(IsWorkingState(*paused.interrupted));
+  }
+  {  // A new scan in the same directory is refused: it would mix two plants.
+    ScanProcess again({scan_dir.string(), "--calibration", calibration.string()}, bus_options,
+                      dir.path() / "again.log");
+    const auto status = again.child().WaitFor(milliseconds(20000));
+    ASSERT_TRUE(status.has_value());
+    EXPECT_TRUE(WIFEXITED(*status) && WEXITSTATUS(*status) == 1);
+    EXPECT_NE(testing::ReadFile(dir.path() / "again.log").find("--resume"), std::string::npos);
+  }
+  {  // Resumed, then killed outright halfway.
+    ScanProcess scan({"--resume", scan_dir.string()}, bus_options, log);
+    ASSERT_TRUE(WaitForCaptures(scan_dir, 8, scan.child()))
+        << testing::ReadFile(log) << cell.LogTails();
+    scan.child().Signal(SIGKILL);
+    ASSERT_TRUE(scan.child().WaitFor(milliseconds(10000)).has_value());
+  }
+  {  // Resumed again: to the end.
+    ScanProcess scan({"--resume", scan_dir.string()}, bus_options, log);
+    const auto status = scan.child().WaitFor(milliseconds(240000));
+    ASSERT_TRUE(status.has_value()) << "scan did not finish\n" << testing::ReadFile(log);
+    ASSERT_TRUE(WIFEXITED(*status) && WEXITSTATUS(*status) == 0)
+        << launch::DescribeWaitStatus(*status) << "\n"
+        << testing::ReadFile(log) << cell.LogTails();
+  }
+
+  const ScanRecord done = LoadScanRecord(scan_dir);
+  EXPECT_EQ(done.state, ScanState::kDone);
+  EXPECT_TRUE(VerifyCaptures(done, scan_dir).empty());
+  size_t image_files = 0;
+  for (const auto& entry : fs::directory_iterator(scan_dir / "images")) {
+    image_files += entry.path().extension() == ".png";
+  }
+  EXPECT_EQ(image_files, done.captures.size()) << "one file per recorded capture, no strays";
+  const size_t frames = sim::ReadTruthLog(cell.truth_log()).size();
+  EXPECT_GE(frames, done.captures.size());
+  EXPECT_LE(frames, done.captures.size() + 2) << "views captured again after the stops";
+  int kept = 0;
+  for (const CaptureRecord& capture : done.captures) {
+    kept += capture.kept;
+    EXPECT_FALSE(capture.phase.empty()) << capture.image_id;
+  }
+  EXPECT_GE(kept, 10);
+  for (const char* file :
+       {"calibration.yaml", "cameras.json", "colmap/images.txt", "model/ppr.bt", "model/points.ply",
+        "model/clusters.ply", "model/mesh.ply", "model/traits.csv", "report.json"}) {
+    EXPECT_TRUE(fs::exists(scan_dir / file)) << file;
+  }
+  EXPECT_GT(fs::file_size(scan_dir / "model/mesh.ply"), 1000u);
+  // The phases were timed through to the report.
+  std::vector<std::string> phases;
+  for (const PhaseTiming& phase : done.phases) phases.push_back(phase.state);
+  EXPECT_NE(std::find(phases.begin(), phases.end(), "ACTIVE_VISION"), phases.end());
+  EXPECT_EQ(phases.back(), "REPORT");
+  EXPECT_TRUE(cell.Exited().empty()) << cell.LogTails();
+}
+
+}  // namespace
+}  // namespace avc::orchestrator

@@ -1,0 +1,159 @@
+// avc scan: one scan of a plant in the cell, from the devices to the traits, as the scan state
+// machine (orchestrator/scan_states.h) walks it: CHECK_DEVICES, LOAD_CALIBRATION, FRAME,
+// INITIAL_CAPTURE, ACTIVE_VISION, PRUNE_VIEWS, BUILD, MERGE_CLUSTER, SURFACE, TRAITS, REPORT.
+// Everything lands in the scan directory, and scan.json there says how far it got, so
+// `avc scan --resume DIR` continues a scan that was stopped, faulted or killed.
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "core/bus/bus.h"
+#include "drivers/client/cell_client.h"
+#include "orchestrator/scan_run.h"
+#include "orchestrator/scan_states.h"
+#include "tools/avc/bus_flags.h"
+#include "tools/avc/commands.h"
+#include "tools/avc/run_guarded.h"
+
+namespace avc::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using orchestrator::ScanState;
+
+struct ScanArgs {
+  std::string dir;
+  std::string calibration;
+  bool resume = false;
+  bool states = false;
+  bool jpeg = false;
+  int max_views = planner::ActiveVisionOptions{}.max_views;
+  int views_per_level = planner::ActiveVisionOptions{}.views_per_level;
+  double ready_timeout_s = 30;
+  bus::BusFlags bus;
+};
+
+std::string Clock(double seconds) {
+  const int s = static_cast<int>(seconds + 0.5);
+  return s >= 60 ? fmt::format("{}m{:02d}s", s / 60, s % 60) : fmt::format("{}s", s);
+}
+
+// A progress line: rewritten in place on a terminal, one line per event in a log.
+void ShowProgress(const orchestrator::ScanProgress& p) {
+  std::string eta = "-";
+  if (p.fraction > 0.05 && p.fraction < 1) eta = Clock(p.elapsed_s * (1 - p.fraction) / p.fraction);
+  const int filled = static_cast<int>(p.fraction * 20 + 0.5);
+  const std::string line =
+      fmt::format("[{:<20}] {:3.0f}% {:<16} {:>3} images  {:>6} elapsed  eta {:>6}  {}",
+                  std::string(filled, '#'), 100 * p.fraction, orchestrator::StateName(p.state),
+                  p.captures, Clock(p.elapsed_s), eta, p.detail);
+  const bool terminal = isatty(STDERR_FILENO);
+  std::cerr << (terminal ? "\r" + line.substr(0, 160) + "\x1b[K" : line + "\n") << std::flush;
+}
+
+int RunScanCommand(const ScanArgs& args) {
+  if (args.states) {
+    std::cout << orchestrator::FormatStateTable();
+    return 0;
+  }
+  if (args.dir.empty()) throw std::invalid_argument("give the scan directory (or --states)");
+  const fs::path dir = args.dir;
+  const bool exists = fs::exists(dir / "scan.json");
+  if (args.resume && !exists) {
+    throw std::runtime_error(dir.string() + " holds no scan (no scan.json) to resume");
+  }
+  if (!args.resume && exists) {
+    throw std::runtime_error(dir.string() +
+                             " already holds a scan; `avc scan --resume DIR` continues it");
+  }
+  if (!exists && args.calibration.empty()) {
+    throw std::invalid_argument(
+        "--calibration FILE is required for a new scan (the cell's calibration.yaml, from "
+        "`avc calibrate`)");
+  }
+
+  orchestrator::ScanRunOptions options;
+  options.scan_dir = dir;
+  options.calibration_file = args.calibration;
+  options.planner.max_views = args.max_views;
+  options.planner.views_per_level = args.views_per_level;
+  if (args.jpeg) options.capture.encoding = avc::image_t::ENCODING_JPEG;
+  options.ready_timeout =
+      std::chrono::milliseconds(static_cast<int64_t>(args.ready_timeout_s * 1e3));
+
+  bus::Bus bus(bus::ResolveBusOptions(args.bus, "avc-scan"));
+  bus::EventLoop loop;
+  bus.AttachTo(loop);
+  loop.QuitOnTerminationSignals();
+  options.stop_requested = [&loop] { return loop.quitting(); };
+  client::CellClient cell(bus, loop, "avc-scan");
+
+  const orchestrator::ScanOutcome outcome = orchestrator::RunScan(cell, options, ShowProgress);
+  std::cerr << "\n";
+  switch (outcome.state) {
+    case ScanState::kDone:
+      std::cout << fmt::format(
+          "scan done: {} images taken now, {} already on disk\n"
+          "  {}/model/mesh.ply, traits.csv; report: {}/report.json\n",
+          outcome.captured_now, outcome.reused, dir.string(), dir.string());
+      return 0;
+    case ScanState::kPaused:
+      std::cout << fmt::format(
+          "scan paused; nothing captured is lost. Continue with:\n"
+          "  avc scan --resume {}\n",
+          dir.string());
+      return 4;
+    default:
+      std::cout << fmt::format(
+          "scan stopped: {}\nnothing captured is lost; fix the cause, then:\n"
+          "  avc scan --resume {}\n",
+          outcome.fault, dir.string());
+      return 3;
+  }
+}
+
+}  // namespace
+
+void RegisterScan(CLI::App& root, int* exit_code) {
+  auto args = std::make_shared<ScanArgs>();
+  CLI::App* command = root.add_subcommand(
+      "scan",
+      "Scan a plant in the cell, unattended: check the devices, load the calibration, frame the\n"
+      "plant, take the 3x10 orbit, add next-best views until every part of the plant proxy is\n"
+      "seen well (Algorithm 1), drop redundant views, then reconstruct (masks, proxy, MVS),\n"
+      "merge and cluster, surface and measure traits. Needs avc robot, avc turntable and avc\n"
+      "camera READY (real or `avc sim cell`).\n"
+      "Writes DIR/images/, cameras.json, colmap/, calibration.yaml, model/ (ppr.bt, points.ply,\n"
+      "merged.ply, clusters.ply, mesh.ply, traits.csv, traits.json), report.json and scan.json,\n"
+      "which is saved after every step: `avc scan --resume DIR` continues after a stop, a fault\n"
+      "or a crash without capturing again what is on disk.\n"
+      "Exit codes: 0 done, 3 stopped by a fault (the message says what), 4 paused by a signal.\n"
+      "\n"
+      "Example: avc scan /data/plant-042 --calibration /data/cal-2026-11-23/calibration.yaml");
+  command->add_option("dir", args->dir, "scan directory (created)");
+  command->add_option("--calibration", args->calibration, "the cell's calibration.yaml")
+      ->check(CLI::ExistingFile);
+  command->add_flag("--resume", args->resume, "continue the scan in DIR where it stopped");
+  command->add_flag("--states", args->states,
+                    "print the scan's states, the services each needs and where each may go");
+  command->add_option("--max-views", args->max_views, "most images the planner captures")
+      ->capture_default_str()
+      ->check(CLI::Range(4, 200));
+  command->add_option("--views-per-height", args->views_per_level, "orbit views per height")
+      ->capture_default_str()
+      ->check(CLI::Range(3, 36));
+  command->add_flag("--jpeg", args->jpeg, "keep the camera's JPEG (default: lossless PNG)");
+  command
+      ->add_option("--ready-timeout", args->ready_timeout_s,
+                   "seconds to wait for the services a step needs")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  AddBusFlags(command, &args->bus);
+  SetGuardedRun(command, exit_code, [args] { return RunScanCommand(*args); });
+}
+
+}  // namespace avc::cli
