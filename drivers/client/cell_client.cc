@@ -18,6 +18,8 @@ namespace {
 
 int64_t WallMicros() { return SystemClock().NowMicros(); }
 
+constexpr std::chrono::milliseconds kImageAfterDoneGrace{10000};
+
 // Distinct for every client a process or its restarts make: the process id and the start time.
 std::string SessionTag() {
   static std::atomic<int> clients{0};
@@ -155,11 +157,20 @@ CapturedView CellClient::Capture(const std::string& image_id, int8_t encoding,
   CapturedView view;
   view.request_to_done_s = SendUntilDone(
       request.request_id, [&] { bus_.Publish(channels::kCaptureRequest, request); }, timeout);
-  const auto found = std::find_if(products_.begin(), products_.end(), [&](const auto& entry) {
-    return entry.first.rfind("images/" + image_id + ".", 0) == 0;
-  });
+  const auto arrived = [&] {
+    return std::find_if(products_.begin(), products_.end(), [&](const auto& entry) {
+      return entry.first.rfind("images/" + image_id + ".", 0) == 0;
+    });
+  };
+  // DONE comes on the control link once any consumer (a recorder, say) has the whole image; our
+  // own copy's last chunks on the bulk link can still be on their way.
+  loop_.RunUntil([&] { return arrived() != products_.end(); }, kImageAfterDoneGrace);
+  const auto found = arrived();
   if (found == products_.end()) {
-    throw std::runtime_error("the camera said DONE but image " + image_id + " never arrived");
+    throw std::runtime_error(
+        fmt::format("the camera said DONE but image {} did not arrive here "
+                    "within {} ms of it",
+                    image_id, kImageAfterDoneGrace.count()));
   }
   const auto& [product, received_wall] = found->second;
   if (view.image.decode(product.payload.data(), 0, static_cast<int>(product.payload.size())) < 0) {

@@ -5,7 +5,6 @@
 // `avc scan --resume DIR` continues a scan that was stopped, faulted or killed.
 
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <iostream>
@@ -18,6 +17,7 @@
 #include "tools/avc/bus_flags.h"
 #include "tools/avc/commands.h"
 #include "tools/avc/run_guarded.h"
+#include "tools/avc/scan_progress.h"
 
 namespace avc::cli {
 namespace {
@@ -36,24 +36,6 @@ struct ScanArgs {
   double ready_timeout_s = 30;
   bus::BusFlags bus;
 };
-
-std::string Clock(double seconds) {
-  const int s = static_cast<int>(seconds + 0.5);
-  return s >= 60 ? fmt::format("{}m{:02d}s", s / 60, s % 60) : fmt::format("{}s", s);
-}
-
-// A progress line: rewritten in place on a terminal, one line per event in a log.
-void ShowProgress(const orchestrator::ScanProgress& p) {
-  std::string eta = "-";
-  if (p.fraction > 0.05 && p.fraction < 1) eta = Clock(p.elapsed_s * (1 - p.fraction) / p.fraction);
-  const int filled = static_cast<int>(p.fraction * 20 + 0.5);
-  const std::string line =
-      fmt::format("[{:<20}] {:3.0f}% {:<16} {:>3} images  {:>6} elapsed  eta {:>6}  {}",
-                  std::string(filled, '#'), 100 * p.fraction, orchestrator::StateName(p.state),
-                  p.captures, Clock(p.elapsed_s), eta, p.detail);
-  const bool terminal = isatty(STDERR_FILENO);
-  std::cerr << (terminal ? "\r" + line.substr(0, 160) + "\x1b[K" : line + "\n") << std::flush;
-}
 
 int RunScanCommand(const ScanArgs& args) {
   if (args.states) {
@@ -92,28 +74,9 @@ int RunScanCommand(const ScanArgs& args) {
   options.stop_requested = [&loop] { return loop.quitting(); };
   client::CellClient cell(bus, loop, "avc-scan");
 
-  const orchestrator::ScanOutcome outcome = orchestrator::RunScan(cell, options, ShowProgress);
+  const orchestrator::ScanOutcome outcome = orchestrator::RunScan(cell, options, ShowScanProgress);
   std::cerr << "\n";
-  switch (outcome.state) {
-    case ScanState::kDone:
-      std::cout << fmt::format(
-          "scan done: {} images taken now, {} already on disk\n"
-          "  {}/model/mesh.ply, traits.csv; report: {}/report.json\n",
-          outcome.captured_now, outcome.reused, dir.string(), dir.string());
-      return 0;
-    case ScanState::kPaused:
-      std::cout << fmt::format(
-          "scan paused; nothing captured is lost. Continue with:\n"
-          "  avc scan --resume {}\n",
-          dir.string());
-      return 4;
-    default:
-      std::cout << fmt::format(
-          "scan stopped: {}\nnothing captured is lost; fix the cause, then:\n"
-          "  avc scan --resume {}\n",
-          outcome.fault, dir.string());
-      return 3;
-  }
+  return ReportScanOutcome(outcome);
 }
 
 }  // namespace

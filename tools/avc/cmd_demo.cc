@@ -1,0 +1,224 @@
+// avc demo: the main job on the simulated cell, from one command. It brings up the simulated cell
+// and its drivers with `avc up` (a launch file written into the output folder), calibrates that
+// cell over a chessboard the way a lab would (or loads a calibration: --calibration, or the one
+// an earlier demo left in the cache), then runs `avc scan` on a plant and prints where the
+// results are.
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "core/bus/bus.h"
+#include "core/calibration/cell/calibration_yaml.h"
+#include "core/calibration/pipeline/calibrate_cell.h"
+#include "core/eval/eval_command.h"
+#include "core/eval/report_text.h"
+#include "core/launch/find_program.h"
+#include "drivers/client/cell_client.h"
+#include "orchestrator/demo_cell.h"
+#include "orchestrator/scan_run.h"
+#include "services/calibrator/calibration_collector.h"
+#include "sim/scene/plant.h"
+#include "tools/avc/bus_flags.h"
+#include "tools/avc/commands.h"
+#include "tools/avc/run_guarded.h"
+#include "tools/avc/scan_progress.h"
+
+namespace avc::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using std::chrono::milliseconds;
+
+struct DemoArgs {
+  std::string dir;
+  std::string plant = "broadleaf";
+  std::string mesh;
+  std::string calibration;
+  bool recalibrate = false;
+  double time_scale = 10;
+  int max_views = planner::ActiveVisionOptions{}.max_views;
+  bus::BusFlags bus;
+};
+
+// A calibration of the simulated cell from an earlier demo: the simulated cell is the same on
+// every run (one cell seed), so it need not be calibrated again. Empty without a home folder.
+fs::path CachedCalibration() {
+  const char* cache = std::getenv("XDG_CACHE_HOME");
+  const char* home = std::getenv("HOME");
+  if (cache != nullptr && *cache != '\0') return fs::path(cache) / "avc/sim-cell-calibration.yaml";
+  if (home != nullptr && *home != '\0')
+    return fs::path(home) / ".cache/avc/sim-cell-calibration.yaml";
+  return {};
+}
+
+fs::path ChooseDemoDir(const DemoArgs& args) {
+  if (!args.dir.empty()) return args.dir;
+  const std::string name =
+      "avc-demo-" + (args.mesh.empty() ? args.plant : fs::path(args.mesh).stem().string());
+  fs::path candidate = fs::current_path() / name;
+  for (int suffix = 2; fs::exists(candidate); ++suffix) {
+    candidate = fs::current_path() / (name + "-" + std::to_string(suffix));
+  }
+  return candidate;
+}
+
+orchestrator::DemoCellOptions CellOptions(const DemoArgs& args, const fs::path& work_dir) {
+  orchestrator::DemoCellOptions options;
+  options.avc_binary = launch::SelfExecutableDir() / "avc";
+  options.work_dir = work_dir;
+  options.bus = bus::ResolveBusOptions(args.bus, "avc-demo");
+  options.sim_args = {"--time-scale", fmt::format("{}", args.time_scale)};
+  return options;
+}
+
+// Calibrates the simulated cell over a chessboard (what `avc calibrate` does in
+// sim-calibration.toml) and returns the calibration file.
+fs::path CalibrateSimulatedCell(const DemoArgs& args, const fs::path& work_dir) {
+  std::cerr << "calibrating the simulated cell over a chessboard (once; kept for later demos)\n";
+  orchestrator::DemoCellOptions options = CellOptions(args, work_dir);
+  for (const char* arg : {"--chessboard", "9x6", "--samples", "4", "--background", "plain"}) {
+    options.sim_args.push_back(arg);
+  }
+  orchestrator::DemoCell cell(options);
+  bus::Bus bus(options.bus);
+  bus::EventLoop loop;
+  bus.AttachTo(loop);
+  client::CellClient client(bus, loop, "avc-demo");
+  calibrator::CollectOptions collect;
+  collect.folder = work_dir / "dataset";
+  collect.board.cols = 9;
+  collect.board.rows = 6;
+  collect.board.square_size = 0.025;
+  try {
+    const calibration::CalibrationDataset dataset =
+        calibrator::CollectCalibrationDataset(client, collect, [](const std::string& what) {
+          std::cerr << "  " << what << (isatty(STDERR_FILENO) ? "\x1b[K\r" : "\n") << std::flush;
+        });
+    std::cerr << "\n";
+    const calibration::CellCalibration result =
+        calibration::CalibrateCell(dataset, calibration::CalibrateOptions{});
+    const fs::path file = work_dir / "calibration.yaml";
+    calibration::SaveCalibration(result, file);
+    std::cerr << fmt::format("  calibration: reprojection RMS {:.3f} px, turntable {:.3f} mm\n",
+                             result.residuals.hand_eye_rms_px,
+                             result.residuals.turntable_centre_rms_mm);
+    return file;
+  } catch (const std::exception& error) {
+    throw std::runtime_error(
+        fmt::format("calibrating the simulated cell: {}\n{}", error.what(), cell.LogTail()));
+  }
+}
+
+fs::path ChooseCalibration(const DemoArgs& args, const fs::path& dir) {
+  if (!args.calibration.empty()) return args.calibration;
+  const fs::path cached = CachedCalibration();
+  if (!args.recalibrate && !cached.empty() && fs::exists(cached)) {
+    std::cerr << "calibration: " << cached.string() << " (from an earlier demo; --recalibrate "
+              << "makes a new one)\n";
+    return cached;
+  }
+  const fs::path made = CalibrateSimulatedCell(args, dir / "calibration-run");
+  if (!cached.empty()) {
+    std::error_code ignored;  // a cache that cannot be written only costs the next demo time
+    fs::create_directories(cached.parent_path(), ignored);
+    fs::copy_file(made, cached, fs::copy_options::overwrite_existing, ignored);
+  }
+  return made;
+}
+
+int RunDemo(const DemoArgs& args) {
+  const fs::path dir = ChooseDemoDir(args);
+  fs::create_directories(dir);
+  std::cerr << "avc demo: results go to " << dir.string() << "\n";
+  const fs::path calibration = ChooseCalibration(args, dir);
+
+  // The truth the simulated plant was made from, in the calibrated frame, for the scores.
+  sim::RenderDatasetOptions scene;
+  if (args.mesh.empty()) {
+    scene.preset = sim::ParsePreset(args.plant);
+  } else {
+    scene.mesh_file = args.mesh;
+  }
+  orchestrator::WriteGroundTruthMesh(scene, calibration::LoadCalibration(calibration),
+                                     dir / "gt_mesh.ply");
+
+  orchestrator::DemoCellOptions options = CellOptions(args, dir / "cell");
+  if (args.mesh.empty()) {
+    options.sim_args.insert(options.sim_args.end(), {"--plant", args.plant});
+  } else {
+    options.sim_args.insert(options.sim_args.end(), {"--mesh", fs::absolute(args.mesh).string()});
+  }
+  options.record_to = fs::absolute(dir / "scan.lcmlog");
+  orchestrator::DemoCell cell(options);
+  bus::Bus bus(options.bus);
+  bus::EventLoop loop;
+  bus.AttachTo(loop);
+  loop.QuitOnTerminationSignals();
+  client::CellClient client(bus, loop, "avc-scan");
+
+  orchestrator::ScanRunOptions scan;
+  scan.scan_dir = dir;
+  scan.calibration_file = calibration;
+  scan.planner.max_views = args.max_views;
+  scan.stop_requested = [&loop] { return loop.quitting(); };
+  const orchestrator::ScanOutcome outcome = orchestrator::RunScan(client, scan, ShowScanProgress);
+  std::cerr << "\n";
+  const int code = ReportScanOutcome(outcome);
+  if (outcome.state != orchestrator::ScanState::kDone) {
+    std::cerr << cell.LogTail() << "\n";
+    return code;
+  }
+  // The mesh against the truth (the plant's every organ, with a line per organ).
+  eval::EvalCommandOptions evaluation;
+  evaluation.ground_truth = dir / "gt_mesh.ply";
+  evaluation.reconstruction = dir / "model/mesh.ply";
+  evaluation.cameras = dir / "cameras.json";
+  evaluation.json_output = dir / "model/mesh_eval.json";
+  std::cout << "the mesh against the simulated plant:\n"
+            << eval::FormatSummary(eval::RunEvalCommand(evaluation));
+  return code;
+}
+
+}  // namespace
+
+void RegisterDemo(CLI::App& root, int* exit_code) {
+  auto args = std::make_shared<DemoArgs>();
+  CLI::App* command = root.add_subcommand(
+      "demo",
+      "The whole job on the simulated cell, no hardware needed: starts the simulated cell and\n"
+      "its drivers (avc up), calibrates the cell over a chessboard the first time (later demos\n"
+      "reuse it from ~/.cache/avc), scans the plant with active vision and reconstructs it:\n"
+      "images, cameras, calibration, plant proxy, points, clusters, mesh, traits, the LCM log\n"
+      "(scan.lcmlog) and report.json, all in DIR (default ./avc-demo-PLANT). Same as `avc scan`\n"
+      "on a simulated cell; `avc scan --resume DIR` continues an interrupted demo while the cell\n"
+      "runs (launch DIR/cell/launch.toml with avc up).\n"
+      "\n"
+      "Example: avc demo --plant strap");
+  command->add_option("dir", args->dir, "output folder (default ./avc-demo-PLANT)");
+  command->add_option("--plant", args->plant, "preset plant: rosette, broadleaf, strap or bushy")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"rosette", "broadleaf", "strap", "bushy"}));
+  command->add_option("--mesh", args->mesh, "scan this mesh (PLY, OBJ, OFF) instead of a preset")
+      ->check(CLI::ExistingFile);
+  command->add_option("--calibration", args->calibration, "use this calibration.yaml")
+      ->check(CLI::ExistingFile);
+  command->add_flag("--recalibrate", args->recalibrate,
+                    "calibrate again instead of the cached one");
+  command
+      ->add_option("--time-scale", args->time_scale,
+                   "simulated seconds per real second (robot and turntable motion)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.1, 100.0));
+  command->add_option("--max-views", args->max_views, "most images the planner captures")
+      ->capture_default_str()
+      ->check(CLI::Range(4, 200));
+  AddBusFlags(command, &args->bus);
+  SetGuardedRun(command, exit_code, [args] { return RunDemo(*args); });
+}
+
+}  // namespace avc::cli
