@@ -29,5 +29,6 @@ void RegisterCluster(CLI::App& root, int* exit_code);
 void RegisterClusterer(CLI::App& root, int* exit_code);
 void RegisterSurfacer(CLI::App& root, int* exit_code);
 void RegisterScan(CLI::App& root, int* exit_code);
+void RegisterReport(CLI::App& root, int* exit_code);
 
 }  // namespace avc::cli

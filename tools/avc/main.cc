@@ -55,6 +55,7 @@ int main(int argc, char** argv) {
   avc::cli::RegisterClusterer(app, &exit_code);
   avc::cli::RegisterSurfacer(app, &exit_code);
   avc::cli::RegisterScan(app, &exit_code);
+  avc::cli::RegisterReport(app, &exit_code);
   ShortenListings(app);
   try {
     app.parse(argc, argv);
