@@ -17,6 +17,7 @@
 #include "core/traits/traits_writer.h"
 #include "core/util/clock.h"
 #include "orchestrator/atomic_file.h"
+#include "orchestrator/report_html.h"
 #include "services/builder/build_report.h"
 #include "services/builder/reconstruction_output.h"
 #include "services/clusterer/cluster_folder.h"
@@ -336,6 +337,7 @@ class ScanRun {
                        "model/merged.ply", "model/clusters.ply", "model/mesh.ply",
                        "model/traits.csv", "model/traits.json"};
     WriteFileAtomically(dir_ / "report.json", report.dump(2) + "\n");
+    WriteReportHtml(dir_);
   }
 
   client::CellClient& cell_;

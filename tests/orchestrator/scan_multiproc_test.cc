@@ -159,7 +159,7 @@ TEST(ScanMultiproc, PausedKilledAndResumedScanFinishesWithEveryImageOnce) {
   EXPECT_GE(kept, 10);
   for (const char* file :
        {"calibration.yaml", "cameras.json", "colmap/images.txt", "model/ppr.bt", "model/points.ply",
-        "model/clusters.ply", "model/mesh.ply", "model/traits.csv", "report.json"}) {
+        "model/clusters.ply", "model/mesh.ply", "model/traits.csv", "report.json", "report.html"}) {
     EXPECT_TRUE(fs::exists(scan_dir / file)) << file;
   }
   EXPECT_GT(fs::file_size(scan_dir / "model/mesh.ply"), 1000u);

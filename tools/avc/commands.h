@@ -30,5 +30,6 @@ void RegisterClusterer(CLI::App& root, int* exit_code);
 void RegisterSurfacer(CLI::App& root, int* exit_code);
 void RegisterScan(CLI::App& root, int* exit_code);
 void RegisterDemo(CLI::App& root, int* exit_code);
+void RegisterReport(CLI::App& root, int* exit_code);
 
 }  // namespace avc::cli
