@@ -101,6 +101,9 @@ cv::Mat ScanCapture::TakeLive(const planner::CellView& view, int index) {
   const std::string image_id = CaptureImageId(index);
   cell_.MoveJoints(view.joints, options_.motion_timeout);
   cell_.TurntableGoto(view.turntable_angle, options_.motion_timeout);
+  cell_.WaitFreshState(options_.motion_timeout);  // the state read after both motions ended
+  const Eigen::Isometry3d reported_flange = cell_.last_flange_pose();
+  const double reported_angle = cell_.last_table_angle();
   const client::CapturedView captured =
       cell_.Capture(image_id, options_.encoding, options_.capture_timeout);
   if (captured.image.encoding != options_.encoding) {
@@ -131,6 +134,10 @@ cv::Mat ScanCapture::TakeLive(const planner::CellView& view, int index) {
   capture.sha256 = Sha256Hex(bytes);
   for (int i = 0; i < 6; ++i) capture.joints[i] = view.joints[i];
   capture.table_angle = view.turntable_angle;
+  for (int r = 0; r < 4; ++r) {
+    for (int c = 0; c < 4; ++c) capture.reported_T_base_flange[4 * r + c] = reported_flange(r, c);
+  }
+  capture.reported_table_angle = reported_angle;
   std::erase_if(record_.captures, [&](const CaptureRecord& c) { return c.index == index; });
   record_.captures.push_back(std::move(capture));
   std::sort(record_.captures.begin(), record_.captures.end(),

@@ -30,10 +30,16 @@ constexpr const char* kFileName = "scan.json";
 }
 
 OrderedJson CaptureToJson(const CaptureRecord& capture) {
-  return {{"index", capture.index},   {"image_id", capture.image_id},
-          {"file", capture.file},     {"sha256", capture.sha256},
-          {"joints", capture.joints}, {"table_angle", capture.table_angle},
-          {"phase", capture.phase},   {"reason", capture.reason},
+  return {{"index", capture.index},
+          {"image_id", capture.image_id},
+          {"file", capture.file},
+          {"sha256", capture.sha256},
+          {"joints", capture.joints},
+          {"table_angle", capture.table_angle},
+          {"reported_T_base_flange", capture.reported_T_base_flange},
+          {"reported_table_angle", capture.reported_table_angle},
+          {"phase", capture.phase},
+          {"reason", capture.reason},
           {"kept", capture.kept}};
 }
 
@@ -129,6 +135,12 @@ std::string CheckRecord(const ScanRecord& record) {
       if (!std::isfinite(joint)) return field + ".joints must be finite";
     }
     if (!std::isfinite(capture.table_angle)) return field + ".table_angle must be finite";
+    for (double value : capture.reported_T_base_flange) {
+      if (!std::isfinite(value)) return field + ".reported_T_base_flange must be finite";
+    }
+    if (!std::isfinite(capture.reported_table_angle)) {
+      return field + ".reported_table_angle must be finite";
+    }
     // Empty until the planner has finished and said which images were frames, orbit or active.
     if (!capture.phase.empty() && capture.phase != "frame" && capture.phase != "initial" &&
         capture.phase != "active") {
@@ -236,6 +248,16 @@ CaptureRecord CaptureFromJson(const Reader& reader, const Json& entry, const std
   }
   const std::string angle_field = where + ".table_angle";
   capture.table_angle = reader.Number(reader.At(entry, angle_field, "table_angle"), angle_field);
+  const std::string flange_field = where + ".reported_T_base_flange";
+  const Json& flange = reader.At(entry, flange_field, "reported_T_base_flange");
+  if (!flange.is_array() || flange.size() != 16) reader.Fail(flange_field, "must be 16 numbers");
+  for (size_t k = 0; k < 16; ++k) {
+    capture.reported_T_base_flange[k] =
+        reader.Number(flange[k], fmt::format("{}[{}]", flange_field, k));
+  }
+  const std::string reported_angle_field = where + ".reported_table_angle";
+  capture.reported_table_angle = reader.Number(
+      reader.At(entry, reported_angle_field, "reported_table_angle"), reported_angle_field);
   capture.phase = reader.String(entry, where, "phase");
   capture.reason = reader.String(entry, where, "reason");
   capture.kept = reader.Bool(entry, where, "kept");

@@ -24,9 +24,13 @@ struct CaptureRecord {
   std::string sha256;              // hex of the file bytes
   std::array<double, 6> joints{};  // rad
   double table_angle = 0;          // rad
-  std::string phase;               // "frame", "initial", "active"; "" until planned
-  std::string reason;              // why this view was taken
-  bool kept = true;                // false once PRUNE_VIEWS drops it
+  // What the controller and the turntable reported once the view was reached: the camera is
+  // placed from these (as the calibrator does), not from the commands.
+  std::array<double, 16> reported_T_base_flange{};  // row-major 4x4, metres
+  double reported_table_angle = 0;                  // rad
+  std::string phase;   // "frame", "initial", "active"; "" until planned
+  std::string reason;  // why this view was taken
+  bool kept = true;    // false once PRUNE_VIEWS drops it
 
   bool operator==(const CaptureRecord&) const = default;
 };

@@ -263,15 +263,18 @@ class ScanRun {
     Persist();
   }
 
-  // cameras.json and colmap/ list the kept views, as the calibration places them.
+  // cameras.json and colmap/ list the kept views, placed by the calibration from the state the
+  // arm and turntable reported at each capture.
   void WriteKeptCameras() {
     std::vector<camera::NamedCamera> cameras;
     for (const CaptureRecord& c : record_.captures) {
       if (!c.kept) continue;
-      kinematics::JointVector q;
-      for (int i = 0; i < 6; ++i) q[i] = c.joints[i];
-      cameras.push_back(
-          {fs::path(c.file).filename().string(), calibration_->CameraAtJoints(q, c.table_angle)});
+      Eigen::Isometry3d T_base_flange;
+      for (int r = 0; r < 4; ++r) {
+        for (int k = 0; k < 4; ++k) T_base_flange(r, k) = c.reported_T_base_flange[4 * r + k];
+      }
+      cameras.push_back({fs::path(c.file).filename().string(),
+                         calibration_->CameraAt(T_base_flange, c.reported_table_angle)});
     }
     if (cameras.size() < 2) {
       throw std::runtime_error(
