@@ -4,6 +4,7 @@
 #include "bench/calibration/calibration_bench.h"
 #include "bench/clustering/clustering_bench.h"
 #include "bench/devices/devices_bench.h"
+#include "bench/e2e/e2e_bench.h"
 #include "bench/merge/merge_bench.h"
 #include "bench/mvs/mvs_bench.h"
 #include "bench/nbv/nbv_bench.h"
@@ -35,6 +36,10 @@ const std::vector<Benchmark>& AllBenchmarks() {
        "the paper's Table 2 replica: Algorithm 2 against k-means, iPDDP, dense and sparse "
        "spectral, PCL region growing on six labelled plant point sets",
        RunClusteringBenchmark},
+      {"e2e",
+       "avc demo end to end on simulated plants (calibration, active vision, reconstruction), "
+       "against the 3x10 orbit alone: wall time, images, the mesh's leaves against the truth",
+       RunE2eBenchmark},
       {"merge",
        "model merging (paper §3.1) into the plant proxy's voxels with 5 % injected outliers on "
        "simulated scans: points before and after, RMSE to the ground truth raw and merged",
