@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "core/util/web_text.h"
+
 namespace avc::orchestrator::report {
 namespace {
 
@@ -15,24 +17,6 @@ void AppendLittleEndian(uint32_t value, std::vector<uint8_t>* bytes) {
 
 }  // namespace
 
-std::string Base64(const std::vector<uint8_t>& bytes) {
-  static constexpr char kAlphabet[] =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  out.reserve((bytes.size() + 2) / 3 * 4);
-  for (size_t i = 0; i < bytes.size(); i += 3) {
-    const size_t n = std::min<size_t>(3, bytes.size() - i);
-    uint32_t block = static_cast<uint32_t>(bytes[i]) << 16;
-    if (n > 1) block |= static_cast<uint32_t>(bytes[i + 1]) << 8;
-    if (n > 2) block |= bytes[i + 2];
-    out += kAlphabet[(block >> 18) & 63];
-    out += kAlphabet[(block >> 12) & 63];
-    out += n > 1 ? kAlphabet[(block >> 6) & 63] : '=';
-    out += n > 2 ? kAlphabet[block & 63] : '=';
-  }
-  return out;
-}
-
 std::string Base64Floats(const std::vector<float>& values) {
   std::vector<uint8_t> bytes;
   bytes.reserve(values.size() * 4);
@@ -41,41 +25,14 @@ std::string Base64Floats(const std::vector<float>& values) {
     std::memcpy(&bits, &v, sizeof bits);
     AppendLittleEndian(bits, &bytes);
   }
-  return Base64(bytes);
+  return Base64Encode(bytes);
 }
 
 std::string Base64Ints(const std::vector<int32_t>& values) {
   std::vector<uint8_t> bytes;
   bytes.reserve(values.size() * 4);
   for (int32_t v : values) AppendLittleEndian(static_cast<uint32_t>(v), &bytes);
-  return Base64(bytes);
-}
-
-std::string EscapeHtml(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&#39;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
+  return Base64Encode(bytes);
 }
 
 std::array<uint8_t, 3> ClusterColour(int32_t cluster) {

@@ -10,16 +10,16 @@
 #include <string_view>
 #include <vector>
 
-namespace avc::orchestrator::report {
+#include "core/util/web_text.h"
 
-std::string Base64(const std::vector<uint8_t>& bytes);
+namespace avc::orchestrator::report {
 
 // The values as little-endian bytes, base64 encoded (a typed array's buffer on any host).
 std::string Base64Floats(const std::vector<float>& values);
 std::string Base64Ints(const std::vector<int32_t>& values);
 
-// Text safe inside HTML elements and attribute values.
-std::string EscapeHtml(std::string_view text);
+// Text safe inside HTML elements and attribute values (core/util/web_text.h).
+using ::avc::EscapeHtml;
 
 // A distinct, stable colour for a cluster id (golden-angle hues); grey for negative ids
 // (outliers, no cluster).

@@ -15,7 +15,7 @@ std::string Bytes(const std::vector<std::array<uint8_t, 3>>& rgb) {
   std::vector<uint8_t> bytes;
   bytes.reserve(rgb.size() * 3);
   for (const auto& c : rgb) bytes.insert(bytes.end(), c.begin(), c.end());
-  return Base64(bytes);
+  return Base64Encode(bytes);
 }
 
 std::string Bytes(const std::vector<Eigen::Matrix<uint8_t, 3, 1>>& rgb) {

@@ -42,6 +42,17 @@ CellProcessOptions LocalCellOptions(int port, const std::string& cell, double ti
   return options;
 }
 
+CellProcessOptions CellOptionsOnBus(const bus::BusOptions& bus, const fs::path& avc_binary,
+                                    const fs::path& work_dir) {
+  CellProcessOptions options;
+  options.avc_binary = avc_binary;
+  options.work_dir = work_dir;
+  options.lcm_url = bus.control_url;
+  options.bulk_url = bus.bulk_url;
+  options.cell = bus.cell;
+  return options;
+}
+
 bus::BusOptions ClientBusOptions(const CellProcessOptions& options, const std::string& source) {
   bus::BusOptions bus_options;
   bus_options.control_url = options.lcm_url;

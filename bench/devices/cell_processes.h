@@ -65,6 +65,12 @@ class CellProcesses {
 CellProcessOptions LocalCellOptions(int port, const std::string& cell, double time_scale,
                                     const std::filesystem::path& work_dir);
 
+// A cell on the bus a program already talks on (its URLs and cell id), with the `avc` at
+// avc_binary and its logs in work_dir; the rest at the defaults.
+CellProcessOptions CellOptionsOnBus(const bus::BusOptions& bus,
+                                    const std::filesystem::path& avc_binary,
+                                    const std::filesystem::path& work_dir);
+
 // The bus options of a program that talks to that cell.
 bus::BusOptions ClientBusOptions(const CellProcessOptions& options, const std::string& source);
 

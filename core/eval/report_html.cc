@@ -5,34 +5,12 @@
 #include <initializer_list>
 
 #include "core/eval/report_format.h"
+#include "core/util/web_text.h"
 
 namespace avc::eval {
 namespace {
 
 using nlohmann::json;
-
-std::string Escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
 
 std::string Row(std::initializer_list<std::string> cells, const char* tag = "td") {
   std::string row = "<tr>";
@@ -76,7 +54,7 @@ std::string OrganTable(const json& report) {
   std::string html = "<table>\n" + header + "</tr>\n";
   for (const json& organ : organs) {
     html += fmt::format("<tr><td>{}</td><td>{:.1f}</td><td>{}</td><td>{}</td><td>{}</td>",
-                        Escape(organ.at("name").get<std::string>()),
+                        EscapeHtml(organ.at("name").get<std::string>()),
                         organ.at("gt_area_m2").get<double>() * 1e6,
                         organ.at("reconstruction_points").get<size_t>(),
                         FormatMillimetres(organ.at("accuracy"), "mean"),
@@ -98,7 +76,7 @@ std::string CoverageSection(const json& coverage) {
   if (coverage.at("organs").empty()) return html;
   html += "<table>\n" + Row({"organ", "samples", "covered %"}, "th");
   for (const json& organ : coverage.at("organs")) {
-    html += Row({Escape(organ.at("name").get<std::string>()),
+    html += Row({EscapeHtml(organ.at("name").get<std::string>()),
                  std::to_string(organ.at("samples").get<size_t>()),
                  FormatPercent(organ.at("fraction"))});
   }
@@ -106,24 +84,6 @@ std::string CoverageSection(const json& coverage) {
 }
 
 }  // namespace
-
-std::string Base64Encode(const std::vector<uint8_t>& bytes) {
-  static constexpr char kAlphabet[] =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  out.reserve((bytes.size() + 2) / 3 * 4);
-  for (size_t i = 0; i < bytes.size(); i += 3) {
-    const size_t remaining = bytes.size() - i;
-    const uint32_t chunk = (uint32_t{bytes[i]} << 16) |
-                           (remaining > 1 ? uint32_t{bytes[i + 1]} << 8 : 0) |
-                           (remaining > 2 ? uint32_t{bytes[i + 2]} : 0);
-    out += kAlphabet[(chunk >> 18) & 63];
-    out += kAlphabet[(chunk >> 12) & 63];
-    out += remaining > 1 ? kAlphabet[(chunk >> 6) & 63] : '=';
-    out += remaining > 2 ? kAlphabet[chunk & 63] : '=';
-  }
-  return out;
-}
 
 std::string RenderHtml(const json& report, const std::vector<uint8_t>& plot_png) {
   std::string html =
@@ -138,8 +98,8 @@ std::string RenderHtml(const json& report, const std::vector<uint8_t>& plot_png)
   const json& rec = report.at("reconstruction");
   html += "<table>\n";
   if (const auto inputs = report.find("inputs"); inputs != report.end()) {
-    html += Row({"ground truth file", Escape(inputs->value("ground_truth", ""))});
-    html += Row({"reconstruction file", Escape(inputs->value("reconstruction", ""))});
+    html += Row({"ground truth file", EscapeHtml(inputs->value("ground_truth", ""))});
+    html += Row({"reconstruction file", EscapeHtml(inputs->value("reconstruction", ""))});
   }
   html +=
       Row({"ground truth", fmt::format("{} faces, {:.6g} m&sup2;, {}, {} samples",
@@ -158,7 +118,7 @@ std::string RenderHtml(const json& report, const std::vector<uint8_t>& plot_png)
   if (report.at("area_ratio").is_number()) {
     html += Row({"area ratio", FormatPercent(report.at("area_ratio")) + " %"});
   }
-  html += "</table>\n<p>" + Escape(report.at("area_note").get<std::string>()) + "</p>\n";
+  html += "</table>\n<p>" + EscapeHtml(report.at("area_note").get<std::string>()) + "</p>\n";
   if (!plot_png.empty()) {
     html += "<p><img alt=\"distance histograms and scores\" src=\"data:image/png;base64," +
             Base64Encode(plot_png) + "\"></p>\n";

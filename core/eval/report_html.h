@@ -13,7 +13,4 @@ namespace avc::eval {
 // plot_png may be empty (the page then has no picture). Same inputs → same bytes.
 std::string RenderHtml(const nlohmann::json& report, const std::vector<uint8_t>& plot_png);
 
-// Standard base64 (RFC 4648) with '=' padding.
-std::string Base64Encode(const std::vector<uint8_t>& bytes);
-
 }  // namespace avc::eval

@@ -12,6 +12,7 @@
 
 #include "core/camera/camera_io.h"
 #include "core/eval/report_html.h"
+#include "core/util/web_text.h"
 #include "tests/eval/test_scenes.h"
 #include "tests/support/test_support.h"
 
@@ -205,7 +206,7 @@ TEST(EvalCommand, BadInputsNameTheFile) {
 
 TEST(Reports, Base64MatchesRfc4648Vectors) {
   auto encode = [](const std::string& text) {
-    return Base64Encode(std::vector<uint8_t>(text.begin(), text.end()));
+    return avc::Base64Encode(std::vector<uint8_t>(text.begin(), text.end()));
   };
   EXPECT_EQ(encode(""), "");
   EXPECT_EQ(encode("f"), "Zg==");
@@ -214,7 +215,7 @@ TEST(Reports, Base64MatchesRfc4648Vectors) {
   EXPECT_EQ(encode("foob"), "Zm9vYg==");
   EXPECT_EQ(encode("fooba"), "Zm9vYmE=");
   EXPECT_EQ(encode("foobar"), "Zm9vYmFy");
-  EXPECT_EQ(Base64Encode({0xff, 0xfe, 0x00}), "//4A");
+  EXPECT_EQ(avc::Base64Encode(std::vector<uint8_t>{0xff, 0xfe, 0x00}), "//4A");
 }
 
 // Runs a shell command, returning its exit code and combined output.

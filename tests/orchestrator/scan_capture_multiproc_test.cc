@@ -58,12 +58,8 @@ TEST(ScanCaptureMultiproc, KeepsEveryImageAndResumesWithoutCapturingAgain) {
   const fs::path scan_dir = dir.path() / "scan";
   fs::create_directories(scan_dir);
   const bus::BusOptions bus_options = bus::ResolveBusOptions({}, "scan-capture-test");
-  bench::CellProcessOptions options;
-  options.avc_binary = testing::Executable("avc");
-  options.work_dir = dir.path();
-  options.lcm_url = bus_options.control_url;
-  options.bulk_url = bus_options.bulk_url;
-  options.cell = bus_options.cell;
+  bench::CellProcessOptions options =
+      bench::CellOptionsOnBus(bus_options, testing::Executable("avc"), dir.path());
   options.time_scale = 10;
   options.triangles = 6000;
   options.width = kWidth;

@@ -86,12 +86,8 @@ TEST(ScanMultiproc, PausedKilledAndResumedScanFinishesWithEveryImageOnce) {
   const fs::path calibration = dir.path() / "calibration.yaml";
   WriteNominalCalibration(calibration);
   const bus::BusOptions bus_options = bus::ResolveBusOptions({}, "scan-test");
-  bench::CellProcessOptions options;
-  options.avc_binary = testing::Executable("avc");
-  options.work_dir = dir.path();
-  options.lcm_url = bus_options.control_url;
-  options.bulk_url = bus_options.bulk_url;
-  options.cell = bus_options.cell;
+  bench::CellProcessOptions options =
+      bench::CellOptionsOnBus(bus_options, testing::Executable("avc"), dir.path());
   options.time_scale = 20;
   options.triangles = 8000;
   options.width = kWidth;

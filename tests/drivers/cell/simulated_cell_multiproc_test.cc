@@ -39,12 +39,8 @@ constexpr int kTriangles = 6000;
 TEST(SimulatedCellMultiproc, PlannedViewIsCapturedFromTheTruePoseThroughEveryRealDriver) {
   testing::TempDir dir("avc-cell-mp");
   const bus::BusOptions bus_options = bus::ResolveBusOptions({}, "cell-test");
-  CellProcessOptions options;
-  options.avc_binary = testing::Executable("avc");
-  options.work_dir = dir.path();
-  options.lcm_url = bus_options.control_url;
-  options.bulk_url = bus_options.bulk_url;
-  options.cell = bus_options.cell;
+  CellProcessOptions options =
+      CellOptionsOnBus(bus_options, testing::Executable("avc"), dir.path());
   options.time_scale = 10;
   options.triangles = kTriangles;
   options.width = 320;
