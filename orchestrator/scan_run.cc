@@ -201,7 +201,10 @@ class ScanRun {
   void Report(const std::string& detail) {
     if (!progress_) return;
     ScanProgress p;
+    p.scan_id = record_.scan_id;
+    p.scan_dir = dir_;
     p.state = machine_.state();
+    p.interrupted = machine_.interrupted();
     p.detail = detail;
     p.captures = static_cast<int>(record_.captures.size());
     const ScanState on_line = machine_.interrupted().value_or(machine_.state());

@@ -24,6 +24,7 @@
 #include <chrono>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "drivers/client/cell_client.h"
@@ -50,7 +51,10 @@ struct ScanRunOptions {
 };
 
 struct ScanProgress {
+  std::string scan_id;
+  std::filesystem::path scan_dir;
   ScanState state = ScanState::kIdle;
+  std::optional<ScanState> interrupted;  // in PAUSED and FAULT
   std::string detail;
   int captures = 0;      // images in the scan so far
   double fraction = 0;   // of the main line

@@ -7,13 +7,18 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
+#include <avc/orchestrator_state_t.hpp>
 #include <csignal>
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include "bench/devices/cell_processes.h"
+#include "core/bus/bus.h"
 #include "core/bus/bus_options.h"
+#include "core/bus/channels.h"
+#include "core/bus/event_loop.h"
 #include "core/calibration/cell/calibration_yaml.h"
 #include "core/launch/child_process.h"
 #include "orchestrator/scan_record.h"
@@ -127,14 +132,32 @@ TEST(ScanMultiproc, PausedKilledAndResumedScanFinishesWithEveryImageOnce) {
     scan.child().Signal(SIGKILL);
     ASSERT_TRUE(scan.child().WaitFor(milliseconds(10000)).has_value());
   }
-  {  // Resumed again: to the end.
+  std::vector<avc::orchestrator_state_t> states;
+  {  // Resumed again: to the end, its state heard on the bus all along.
+    bus::Bus bus(bus_options);
+    bus::EventLoop loop;
+    bus.AttachTo(loop);
+    bus.Subscribe<avc::orchestrator_state_t>(channels::kOrchestratorState,
+                                             [&](const avc::orchestrator_state_t& state,
+                                                 const bus::RxInfo&) { states.push_back(state); });
     ScanProcess scan({"--resume", scan_dir.string()}, bus_options, log);
-    const auto status = scan.child().WaitFor(milliseconds(240000));
+    loop.RunUntil([&] { return scan.child().TryWait().has_value(); }, milliseconds(240000));
+    const auto status = scan.child().WaitFor(milliseconds(1000));
     ASSERT_TRUE(status.has_value()) << "scan did not finish\n" << testing::ReadFile(log);
     ASSERT_TRUE(WIFEXITED(*status) && WEXITSTATUS(*status) == 0)
         << launch::DescribeWaitStatus(*status) << "\n"
         << testing::ReadFile(log) << cell.LogTails();
   }
+
+  ASSERT_FALSE(states.empty()) << "no ORCH_STATE heard";
+  EXPECT_EQ(states.back().state, "DONE");
+  EXPECT_EQ(states.back().scan_id, "plant");
+  EXPECT_DOUBLE_EQ(states.back().fraction, 1.0);
+  const auto heard = [&](const std::string& name) {
+    return std::any_of(states.begin(), states.end(),
+                       [&](const avc::orchestrator_state_t& s) { return s.state == name; });
+  };
+  EXPECT_TRUE(heard("BUILD") && heard("SURFACE") && heard("REPORT"));
 
   const ScanRecord done = LoadScanRecord(scan_dir);
   EXPECT_EQ(done.state, ScanState::kDone);

@@ -166,7 +166,9 @@ int RunDemo(const DemoArgs& args) {
   scan.calibration_file = calibration;
   scan.planner.max_views = args.max_views;
   scan.stop_requested = [&loop] { return loop.quitting(); };
-  const orchestrator::ScanOutcome outcome = orchestrator::RunScan(client, scan, ShowScanProgress);
+  ScanStateBroadcast broadcast(bus, loop);
+  const orchestrator::ScanOutcome outcome =
+      orchestrator::RunScan(client, scan, [&](const auto& p) { broadcast(p); });
   std::cerr << "\n";
   const int code = ReportScanOutcome(outcome);
   if (outcome.state != orchestrator::ScanState::kDone) {

@@ -74,7 +74,9 @@ int RunScanCommand(const ScanArgs& args) {
   options.stop_requested = [&loop] { return loop.quitting(); };
   client::CellClient cell(bus, loop, "avc-scan");
 
-  const orchestrator::ScanOutcome outcome = orchestrator::RunScan(cell, options, ShowScanProgress);
+  ScanStateBroadcast broadcast(bus, loop);
+  const orchestrator::ScanOutcome outcome =
+      orchestrator::RunScan(cell, options, [&](const auto& p) { broadcast(p); });
   std::cerr << "\n";
   return ReportScanOutcome(outcome);
 }

@@ -3,8 +3,13 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <avc/orchestrator_state_t.hpp>
+#include <chrono>
 #include <iostream>
 #include <string>
+
+#include "core/bus/channels.h"
+#include "core/util/clock.h"
 
 namespace avc::cli {
 namespace {
@@ -28,6 +33,45 @@ void ShowScanProgress(const orchestrator::ScanProgress& p) {
                   p.captures, Clock(p.elapsed_s), eta, p.detail);
   const bool terminal = isatty(STDERR_FILENO);
   std::cerr << (terminal ? "\r" + line.substr(0, 160) + "\x1b[K" : line + "\n") << std::flush;
+}
+
+ScanStateBroadcast::ScanStateBroadcast(bus::Bus& bus, bus::EventLoop& loop)
+    : bus_(bus),
+      loop_(loop),
+      timer_(loop.AddTimer(
+          std::chrono::seconds(1), [this] { Publish(); }, /*repeating=*/true)) {}
+
+ScanStateBroadcast::~ScanStateBroadcast() { loop_.CancelTimer(timer_); }
+
+void ScanStateBroadcast::operator()(const orchestrator::ScanProgress& progress) {
+  ShowScanProgress(progress);
+  if (last_ && last_->state != progress.state) {
+    previous_state_ = orchestrator::StateName(last_->state);
+  }
+  last_ = progress;
+  Publish();
+}
+
+void ScanStateBroadcast::Publish() {
+  if (!last_) return;
+  const orchestrator::ScanProgress& p = *last_;
+  avc::orchestrator_state_t message{};
+  message.scan_id = p.scan_id;
+  message.scan_dir = p.scan_dir.string();
+  message.state = orchestrator::StateName(p.state);
+  message.previous_state = previous_state_;
+  message.detail =
+      p.interrupted ? fmt::format("{} (in {})", p.detail, orchestrator::StateName(*p.interrupted))
+                    : p.detail;
+  message.started_utime =
+      SystemClock().NowMicros() - static_cast<int64_t>(1e6 * p.elapsed_s);  // of this run
+  message.views_captured = p.captures;
+  message.views_planned = 0;  // the planner decides as it goes
+  message.fraction = p.fraction;
+  message.eta_us = p.fraction > 0.05 && p.fraction < 1
+                       ? static_cast<int64_t>(1e6 * p.elapsed_s * (1 - p.fraction) / p.fraction)
+                       : -1;
+  bus_.Publish(channels::kOrchestratorState, message);
 }
 
 int ReportScanOutcome(const orchestrator::ScanOutcome& outcome) {

@@ -4,11 +4,37 @@
 // rewritten in place on a terminal, one line per event in a log) and the closing message with
 // the exit code.
 
+#include <optional>
+
+#include "core/bus/bus.h"
+#include "core/bus/event_loop.h"
 #include "orchestrator/scan_run.h"
 
 namespace avc::cli {
 
 void ShowScanProgress(const orchestrator::ScanProgress& progress);
+
+// Shows each progress event and publishes the scan's state (orchestrator_state_t on ORCH_STATE)
+// on every change and again every second while the loop runs (the scan runs the loop whenever
+// it waits on the cell; not during the reconstruction's computing).
+class ScanStateBroadcast {
+ public:
+  ScanStateBroadcast(bus::Bus& bus, bus::EventLoop& loop);
+  ~ScanStateBroadcast();
+  ScanStateBroadcast(const ScanStateBroadcast&) = delete;
+  ScanStateBroadcast& operator=(const ScanStateBroadcast&) = delete;
+
+  void operator()(const orchestrator::ScanProgress& progress);
+
+ private:
+  void Publish();
+
+  bus::Bus& bus_;
+  bus::EventLoop& loop_;
+  bus::EventLoop::TimerId timer_;
+  std::optional<orchestrator::ScanProgress> last_;
+  std::string previous_state_;
+};
 
 // Prints where the results are, or why the scan stopped and how to resume it. Returns the exit
 // code: 0 done, 3 stopped by a fault, 4 paused.
