@@ -3,11 +3,9 @@
 #include <fmt/format.h>
 
 #include <ctime>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 
-#include "orchestrator/atomic_file.h"
+#include "core/util/file_io.h"
 #include "orchestrator/report_assets.h"
 #include "orchestrator/report_encode.h"
 #include "orchestrator/report_inputs.h"
@@ -22,13 +20,12 @@ namespace fs = std::filesystem;
 using report::EscapeHtml;
 
 std::string ReadScript(const char* path, const char* package) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  if (!in || text.str().empty()) {
-    throw std::runtime_error(fmt::format("{}: cannot be read (Debian package {})", path, package));
+  try {
+    std::string text = ReadFile(path);
+    if (!text.empty()) return text;
+  } catch (const std::runtime_error&) {
   }
-  return text.str();
+  throw std::runtime_error(fmt::format("{}: cannot be read (Debian package {})", path, package));
 }
 
 // A script inlined into the page; "</script" inside it would close the element early.

@@ -2,13 +2,12 @@
 
 #include <fmt/format.h>
 
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 #include "core/calibration/cell/calibration_yaml.h"
 #include "core/geometry/mesh_io.h"
 #include "core/geometry/point_cloud_io.h"
+#include "core/util/file_io.h"
 
 namespace avc::orchestrator::report {
 namespace {
@@ -21,12 +20,9 @@ void RequireFile(const fs::path& path) {
 
 nlohmann::json ReadJson(const fs::path& path) {
   RequireFile(path);
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  if (!in) throw std::runtime_error(path.string() + ": cannot be read");
+  const std::string text = ReadFile(path);
   try {
-    return nlohmann::json::parse(text.str());
+    return nlohmann::json::parse(text);
   } catch (const nlohmann::json::exception& e) {
     throw std::runtime_error(fmt::format("{}: not JSON: {}", path.string(), e.what()));
   }

@@ -4,16 +4,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <iterator>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 #include <utility>
 #include <vector>
 
+#include "core/util/file_io.h"
 #include "core/util/sha256.h"
-#include "orchestrator/atomic_file.h"
 
 namespace avc::orchestrator {
 namespace {
@@ -27,10 +25,13 @@ bool SamePose(const CaptureRecord& capture, const planner::CellView& view, doubl
   return std::abs(capture.table_angle - view.turntable_angle) <= tolerance;
 }
 
-std::vector<uint8_t> ReadBytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return {};
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+// The file's bytes, or nothing when it is missing or unreadable (it is then captured again).
+std::string BytesIfReadable(const std::filesystem::path& path) {
+  try {
+    return ReadFile(path);
+  } catch (const std::runtime_error&) {
+    return {};
+  }
 }
 
 std::string Extension(int8_t encoding) {
@@ -75,9 +76,11 @@ std::optional<cv::Mat> ScanCapture::operator()(const planner::CellView& view) {
           "started, so it cannot be resumed as it is",
           recorded->image_id, view.turntable_angle / kDegree, recorded->table_angle / kDegree));
     }
-    const std::vector<uint8_t> bytes = ReadBytes(scan_dir_ / recorded->file);
+    const std::string bytes = BytesIfReadable(scan_dir_ / recorded->file);
     if (!bytes.empty() && Sha256Hex(bytes) == recorded->sha256) {
-      const cv::Mat image = cv::imdecode(bytes, cv::IMREAD_COLOR);
+      const cv::Mat image = cv::imdecode(
+          cv::Mat(1, static_cast<int>(bytes.size()), CV_8UC1, const_cast<char*>(bytes.data())),
+          cv::IMREAD_COLOR);
       if (!image.empty()) {
         ++reused_;
         if (progress_) progress_(fmt::format("{} from {}", recorded->image_id, recorded->file));

@@ -2,17 +2,13 @@
 
 #include <fmt/format.h>
 
-#include <cerrno>
 #include <cmath>
-#include <cstring>
-#include <fstream>
 #include <limits>
 #include <set>
-#include <sstream>
 #include <stdexcept>
 
+#include "core/util/file_io.h"
 #include "core/util/sha256.h"
-#include "orchestrator/atomic_file.h"
 
 namespace avc::orchestrator {
 namespace {
@@ -24,10 +20,6 @@ using OrderedJson = nlohmann::ordered_json;
 constexpr const char* kFileName = "scan.json";
 
 // ---- Writing ----------------------------------------------------------------------------------
-
-[[noreturn]] void SystemFail(const std::string& action, const fs::path& path, int error) {
-  throw std::runtime_error(fmt::format("{} {}: {}", action, path.string(), std::strerror(error)));
-}
 
 OrderedJson CaptureToJson(const CaptureRecord& capture) {
   return {{"index", capture.index},
@@ -299,15 +291,6 @@ ScanRecord RecordFromJson(const Reader& reader, const Json& doc) {
   return record;
 }
 
-std::string ReadBytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) SystemFail("cannot read", path, errno);
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  if (in.bad()) SystemFail("cannot read", path, errno);
-  return bytes.str();
-}
-
 }  // namespace
 
 const CaptureRecord* ScanRecord::CaptureFor(int index) const {
@@ -337,7 +320,7 @@ void SaveScanRecord(const ScanRecord& record, const fs::path& scan_dir) {
 ScanRecord LoadScanRecord(const fs::path& scan_dir) {
   const fs::path path = scan_dir / kFileName;
   if (!fs::exists(path)) throw std::runtime_error(path.string() + ": no such file");
-  const std::string bytes = ReadBytes(path);
+  const std::string bytes = ReadFile(path);
   Json doc;
   try {
     doc = Json::parse(bytes);
@@ -364,7 +347,7 @@ std::vector<std::string> VerifyCaptures(const ScanRecord& record, const fs::path
       problems.push_back(fmt::format("{}: {} is missing", capture.image_id, capture.file));
       continue;
     }
-    const std::string sha256 = Sha256Hex(ReadBytes(file));
+    const std::string sha256 = Sha256Hex(ReadFile(file));
     if (sha256 != capture.sha256) {
       problems.push_back(fmt::format("{}: {} has changed since capture (sha256 {}, recorded {})",
                                      capture.image_id, capture.file, sha256, capture.sha256));

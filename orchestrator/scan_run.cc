@@ -2,8 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <fstream>
-#include <iterator>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
@@ -16,7 +14,7 @@
 #include "core/geometry/mesh_io.h"
 #include "core/traits/traits_writer.h"
 #include "core/util/clock.h"
-#include "orchestrator/atomic_file.h"
+#include "core/util/file_io.h"
 #include "orchestrator/report_html.h"
 #include "services/builder/build_report.h"
 #include "services/builder/reconstruction_output.h"
@@ -32,12 +30,6 @@ namespace fs = std::filesystem;
 using std::chrono::milliseconds;
 
 constexpr char kCalibrationName[] = "calibration.yaml";
-
-std::string ReadText(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " + path.string());
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 ScanState StateOfStage(planner::ActiveVisionStage stage) {
   switch (stage) {
@@ -226,7 +218,7 @@ class ScanRun {
     if (calibration_) return;
     const fs::path kept = dir_ / kCalibrationName;
     const fs::path& given = options_.calibration_file;
-    if (!given.empty() && fs::exists(kept) && ReadText(given) != ReadText(kept)) {
+    if (!given.empty() && fs::exists(kept) && ReadFile(given) != ReadFile(kept)) {
       throw std::runtime_error(
           fmt::format("{} differs from the calibration this scan started with ({}); resume without "
                       "--calibration, or start a new scan",
@@ -236,7 +228,7 @@ class ScanRun {
       if (given.empty()) {
         throw std::runtime_error("no calibration: give the cell's calibration.yaml");
       }
-      WriteFileAtomically(kept, ReadText(given));
+      WriteFileAtomically(kept, ReadFile(given));
     }
     calibration_ = calibration::LoadCalibration(kept);
   }
@@ -336,8 +328,8 @@ class ScanRun {
     for (const CaptureRecord& c : record_.captures) kept += c.kept;
     report["images"] = {{"captured", record_.captures.size()}, {"kept", kept}};
     report["planner"] = record_.options;
-    report["build"] = nlohmann::json::parse(ReadText(model_dir_ / "build.json"));
-    report["traits"] = nlohmann::json::parse(ReadText(model_dir_ / "traits.json"));
+    report["build"] = nlohmann::json::parse(ReadFile(model_dir_ / "build.json"));
+    report["traits"] = nlohmann::json::parse(ReadFile(model_dir_ / "traits.json"));
     report["files"] = {"images/",          "cameras.json",       "colmap/",
                        kCalibrationName,   "model/ppr.bt",       "model/points.ply",
                        "model/merged.ply", "model/clusters.ply", "model/mesh.ply",

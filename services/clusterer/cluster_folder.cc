@@ -2,24 +2,17 @@
 
 #include <fmt/format.h>
 
-#include <fstream>
-#include <iterator>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
 #include "core/mvs/mvs_points_io.h"
 #include "core/ppr/octree_voxels.h"
+#include "core/util/file_io.h"
 
 namespace avc::clusterer {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string ReadBytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " + path.string());
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 // The exact voxel size from build.json beside the proxy (the .bt keeps 6 digits), else 0 with
 // the reason in `note`.
@@ -27,7 +20,7 @@ double VoxelSizeFromReport(const fs::path& folder, std::string* note) {
   const fs::path report = folder / "build.json";
   if (!fs::exists(report)) return 0;
   try {
-    const nlohmann::json json = nlohmann::json::parse(ReadBytes(report));
+    const nlohmann::json json = nlohmann::json::parse(ReadFile(report));
     return json.at("proxy").at("voxel_size_m").get<double>();
   } catch (const nlohmann::json::exception& error) {
     *note = fmt::format("{}: no proxy voxel size ({}); using the tree's", report.string(),
@@ -47,7 +40,7 @@ messages::ClustersContent ClusterFolderFiles(const fs::path& points_file,
   read.proxy_file = proxy_file;
   const mvs::MvsPoints points = mvs::ReadMvsPointsPly(points_file);
   const mvs::MvsBounds proxy = ppr::OccupiedVoxelsFromBinary(
-      ReadBytes(proxy_file), VoxelSizeFromReport(proxy_file.parent_path(), &read.note),
+      ReadFile(proxy_file), VoxelSizeFromReport(proxy_file.parent_path(), &read.note),
       proxy_file.string());
   read.points = points.size();
   read.occupied_voxels = proxy.occupied_centres.size();

@@ -1,4 +1,4 @@
-#include "orchestrator/atomic_file.h"
+#include "core/util/file_io.h"
 
 #include <fcntl.h>
 #include <fmt/format.h>
@@ -6,10 +6,12 @@
 
 #include <cerrno>
 #include <cstring>
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
-namespace avc::orchestrator {
+namespace avc {
 namespace {
 
 namespace fs = std::filesystem;
@@ -51,6 +53,15 @@ void WriteAll(int fd, std::string_view bytes, const fs::path& path) {
 
 }  // namespace
 
+std::string ReadFile(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) SystemFail("cannot read", path, errno);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  if (in.bad()) SystemFail("cannot read", path, errno);
+  return bytes.str();
+}
+
 void WriteFileAtomically(const fs::path& path, std::string_view bytes) {
   const fs::path tmp = path.string() + ".tmp";
   {
@@ -74,4 +85,4 @@ void WriteFileAtomically(const fs::path& path, std::string_view bytes) {
   if (::fsync(directory.get()) != 0) SystemFail("cannot sync directory", dir, errno);
 }
 
-}  // namespace avc::orchestrator
+}  // namespace avc
