@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/kinematics/row_major_pose.h"
 #include "core/util/file_io.h"
 #include "core/util/sha256.h"
 
@@ -137,9 +138,7 @@ cv::Mat ScanCapture::TakeLive(const planner::CellView& view, int index) {
   capture.sha256 = Sha256Hex(bytes);
   for (int i = 0; i < 6; ++i) capture.joints[i] = view.joints[i];
   capture.table_angle = view.turntable_angle;
-  for (int r = 0; r < 4; ++r) {
-    for (int c = 0; c < 4; ++c) capture.reported_T_base_flange[4 * r + c] = reported_flange(r, c);
-  }
+  kinematics::RowMajorFromIsometry(reported_flange, capture.reported_T_base_flange.data());
   capture.reported_table_angle = reported_angle;
   std::erase_if(record_.captures, [&](const CaptureRecord& c) { return c.index == index; });
   record_.captures.push_back(std::move(capture));

@@ -12,6 +12,7 @@
 #include "core/camera/camera_io.h"
 #include "core/dataset/dataset_reader.h"
 #include "core/geometry/mesh_io.h"
+#include "core/kinematics/row_major_pose.h"
 #include "core/traits/traits_writer.h"
 #include "core/util/clock.h"
 #include "core/util/file_io.h"
@@ -264,10 +265,8 @@ class ScanRun {
     std::vector<camera::NamedCamera> cameras;
     for (const CaptureRecord& c : record_.captures) {
       if (!c.kept) continue;
-      Eigen::Isometry3d T_base_flange;
-      for (int r = 0; r < 4; ++r) {
-        for (int k = 0; k < 4; ++k) T_base_flange(r, k) = c.reported_T_base_flange[4 * r + k];
-      }
+      const Eigen::Isometry3d T_base_flange =
+          kinematics::IsometryFromRowMajor(c.reported_T_base_flange.data());
       cameras.push_back({fs::path(c.file).filename().string(),
                          calibration_->CameraAt(T_base_flange, c.reported_table_angle)});
     }

@@ -11,6 +11,7 @@
 
 #include "core/bus/channels.h"
 #include "core/bus/heartbeat.h"
+#include "core/kinematics/row_major_pose.h"
 #include "core/util/clock.h"
 
 namespace avc::client {
@@ -42,10 +43,7 @@ CellClient::CellClient(bus::Bus& bus, bus::EventLoop& loop, std::string name)
   subscriptions_.push_back(bus_.Subscribe<avc::robot_state_t>(
       channels::kRobotState, [this](const avc::robot_state_t& state, const bus::RxInfo&) {
         for (int i = 0; i < 6; ++i) last_joints_[i] = state.q[i];
-        for (int r = 0; r < 4; ++r) {
-          for (int c = 0; c < 4; ++c)
-            last_flange_pose_.matrix()(r, c) = state.T_base_flange[4 * r + c];
-        }
+        last_flange_pose_ = kinematics::IsometryFromRowMajor(state.T_base_flange);
         ++robot_states_;
       }));
   subscriptions_.push_back(bus_.Subscribe<avc::turntable_state_t>(

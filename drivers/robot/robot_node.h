@@ -144,8 +144,4 @@ class RobotNode {
   void FinishModeChange(int8_t status, const std::string& reason);
 };
 
-// Rows of a row-major 4x4 into a rigid transform, and back.
-Eigen::Isometry3d IsometryFromRowMajor(const double* values);
-void RowMajorFromIsometry(const Eigen::Isometry3d& pose, double* values);
-
 }  // namespace avc::robot

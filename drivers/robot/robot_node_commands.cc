@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "core/bus/channels.h"
+#include "core/kinematics/row_major_pose.h"
 #include "core/util/log.h"
 #include "drivers/robot/robot_node.h"
 #include "drivers/robot/urscript.h"
@@ -16,6 +17,8 @@ namespace avc::robot {
 namespace {
 
 using Command = avc::robot_command_t;
+using kinematics::IsometryFromRowMajor;
+using kinematics::RowMajorFromIsometry;
 using Clock = std::chrono::steady_clock;
 
 JointVector ToJoints(const std::array<double, 6>& q) {
@@ -23,22 +26,6 @@ JointVector ToJoints(const std::array<double, 6>& q) {
 }
 
 }  // namespace
-
-Eigen::Isometry3d IsometryFromRowMajor(const double* values) {
-  Eigen::Matrix4d m;
-  for (int r = 0; r < 4; ++r) {
-    for (int c = 0; c < 4; ++c) m(r, c) = values[4 * r + c];
-  }
-  Eigen::Isometry3d pose;
-  pose.matrix() = m;
-  return pose;
-}
-
-void RowMajorFromIsometry(const Eigen::Isometry3d& pose, double* values) {
-  for (int r = 0; r < 4; ++r) {
-    for (int c = 0; c < 4; ++c) values[4 * r + c] = pose.matrix()(r, c);
-  }
-}
 
 void RobotNode::Ack(const std::string& request_id, int8_t status, const std::string& reason) {
   acks_.Send(request_id, status, reason);

@@ -9,6 +9,7 @@
 
 #include "core/kinematics/forward_kinematics.h"
 #include "core/kinematics/pose_difference.h"
+#include "core/kinematics/row_major_pose.h"
 #include "tests/drivers/robot/robot_node_harness.h"
 
 namespace avc::robot::testing {
@@ -46,8 +47,9 @@ TEST_F(RobotNodeTest, MoveJointsIsAcceptedThenDoneAndStateFollows) {
   EXPECT_EQ(state.robot_mode, static_cast<int8_t>(RobotMode::kRunning));
   EXPECT_EQ(state.active_request_id, "");
   const auto q = Eigen::Map<const JointVector>(state.q);
-  const auto difference = kinematics::ComparePoses(IsometryFromRowMajor(state.T_base_flange),
-                                                   kinematics::ForwardKinematics(h_.cell.dh, q));
+  const auto difference =
+      kinematics::ComparePoses(kinematics::IsometryFromRowMajor(state.T_base_flange),
+                               kinematics::ForwardKinematics(h_.cell.dh, q));
   EXPECT_LT(difference.translation_m, 1e-9);
   // A repeated request id is answered again and not executed again.
   const int scripts = h_.emulator->Snapshot().scripts_run;
