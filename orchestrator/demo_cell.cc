@@ -34,7 +34,7 @@ std::string Array(const std::vector<std::string>& items) {
 
 }  // namespace
 
-std::string DemoLaunchFile(const DemoCellOptions& options) {
+std::string DemoLaunchFile(const DemoCellOptions& options, const fs::path& key_file) {
   const std::string avc = options.avc_binary.string();
   const std::string link_dir = (options.work_dir / "sim").string();
   std::vector<std::string> sim_args = {"sim", "cell", "--link-dir", link_dir};
@@ -49,18 +49,20 @@ std::string DemoLaunchFile(const DemoCellOptions& options) {
                         Quoted(name), Quoted(avc), Array(args));
   };
   process("sim", sim_args);
-  process("robot", {"robot", "--host", "127.0.0.1"});
-  process("turntable", {"turntable", "--device", link_dir + "/lt360"});
+  process("robot", {"robot", "--host", "127.0.0.1", "--key", key_file.string()});
+  process("turntable", {"turntable", "--device", link_dir + "/lt360", "--key", key_file.string()});
   process("camera", {"camera", "--port", "ptpip:127.0.0.1:15740", "--no-usb-watch"});
   if (!options.record_to.empty())
     process("recorder", {"record", "--output", options.record_to.string()});
   return text;
 }
 
-DemoCell::DemoCell(const DemoCellOptions& options) : log_(options.work_dir / "up.log") {
+DemoCell::DemoCell(const DemoCellOptions& options)
+    : log_(options.work_dir / "up.log"),
+      key_(auth::LoadOrGenerateCommandKey(fs::absolute(options.work_dir / "cell.key"))) {
   fs::create_directories(options.work_dir / "logs");
   const fs::path launch_file = options.work_dir / "launch.toml";
-  std::ofstream(launch_file) << DemoLaunchFile(options);
+  std::ofstream(launch_file) << DemoLaunchFile(options, key_.file);
   launch::SpawnSpec spec;
   spec.argv = {options.avc_binary.string(), "up", launch_file.string()};
   spec.log_file = log_.string();

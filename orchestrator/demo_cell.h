@@ -3,14 +3,16 @@
 // The simulated cell `avc demo` runs on, as a lab would run a real one: `avc up` on a launch file
 // written into the work folder, starting `avc sim cell` (with the arguments given), the three
 // drivers and optionally a recorder. Its processes talk on the bus options given (passed as
-// AVC_LCM_URL, AVC_BULK_URL and AVC_CELL). The destructor stops them all (SIGTERM to `avc up`,
-// which stops its children).
+// AVC_LCM_URL, AVC_BULK_URL and AVC_CELL). The drivers obey only commands signed with the
+// cell's own key, work_dir/cell.key (made at the first start). The destructor stops them all
+// (SIGTERM to `avc up`, which stops its children).
 
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "core/auth/command_key.h"
 #include "core/bus/bus_options.h"
 #include "core/calibration/cell/cell_calibration.h"
 #include "core/launch/child_process.h"
@@ -26,8 +28,8 @@ struct DemoCellOptions {
   bus::BusOptions bus;
 };
 
-// The launch file's text (TOML), for the options above.
-std::string DemoLaunchFile(const DemoCellOptions& options);
+// The launch file's text (TOML), for the options above and the drivers' key file.
+std::string DemoLaunchFile(const DemoCellOptions& options, const std::filesystem::path& key_file);
 
 class DemoCell {
  public:
@@ -40,9 +42,12 @@ class DemoCell {
 
   // The tail of `avc up`'s log, for error messages.
   std::string LogTail(int lines = 20) const;
+  // The key the drivers check motion commands with: give it to the CellClient.
+  const auth::CommandKey& key() const { return key_; }
 
  private:
   std::filesystem::path log_;
+  auth::CommandKey key_;
   std::optional<launch::ChildProcess> up_;
 };
 

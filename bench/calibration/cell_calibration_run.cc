@@ -45,7 +45,7 @@ nlohmann::json RunCellCalibration(const CellCalibrationRunOptions& options) {
   bus::Bus bus(ClientBusOptions(cell_options, "avc-bench"));
   bus::EventLoop loop;
   bus.AttachTo(loop);
-  client::CellClient client(bus, loop);
+  client::CellClient client(bus, loop, "avc-bench", cell.key());
   try {
     client.WaitReady({"avc-sim"}, milliseconds(30000));
     calibrator::CollectOptions collect;

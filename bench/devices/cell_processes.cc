@@ -64,6 +64,8 @@ bus::BusOptions ClientBusOptions(const CellProcessOptions& options, const std::s
 
 CellProcesses::CellProcesses(const CellProcessOptions& options) : work_dir_(options.work_dir) {
   fs::create_directories(work_dir_);
+  key_ = auth::LoadOrGenerateCommandKey(work_dir_ / "cell.key");
+  const std::string key_file = key_.file.string();
   const std::string avc = options.avc_binary.string();
   const int rtde = FreeTcpPort(), primary = FreeTcpPort(), secondary = FreeTcpPort(),
             dashboard = FreeTcpPort(), camera = FreeTcpPort();
@@ -103,11 +105,11 @@ CellProcesses::CellProcesses(const CellProcessOptions& options) : work_dir_(opti
   Start(
       "avc-robot",
       {avc, "robot", "--host", "127.0.0.1", "--rtde-port", std::to_string(rtde), "--secondary-port",
-       std::to_string(secondary), "--dashboard-port", std::to_string(dashboard)},
+       std::to_string(secondary), "--dashboard-port", std::to_string(dashboard), "--key", key_file},
       options);
   Start("avc-turntable",
         {avc, "turntable", "--device", (link_dir / "lt360").string(), "--speed",
-         fmt::format("{}", options.table_speed_deg_s)},
+         fmt::format("{}", options.table_speed_deg_s), "--key", key_file},
         options);
   Start("avc-camera",
         {avc, "camera", "--port", fmt::format("ptpip:127.0.0.1:{}", camera), "--no-usb-watch"},

@@ -3,12 +3,14 @@
 // The simulated cell as the separate processes a lab runs: `avc sim cell` (all emulators) plus
 // the three drivers (`avc robot`, `avc turntable`, `avc camera`) pointed at it over the real
 // protocols, talking LCM on the given URLs. Used by `avc bench devices` and the end-to-end test.
-// Ports are picked free at start; logs land in work_dir.
+// Ports are picked free at start; logs land in work_dir. The drivers obey only commands signed
+// with the cell's key, work_dir/cell.key (made at the first start).
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "core/auth/command_key.h"
 #include "core/bus/bus_options.h"
 #include "core/launch/child_process.h"
 
@@ -46,6 +48,8 @@ class CellProcesses {
   // The last lines of every log, for error messages.
   std::string LogTails(int lines = 15) const;
   std::filesystem::path truth_log() const;
+  // The key the drivers check motion commands with: give it to the CellClient.
+  const auth::CommandKey& key() const { return key_; }
 
  private:
   struct Process {
@@ -57,6 +61,7 @@ class CellProcesses {
              const CellProcessOptions& options);
 
   std::filesystem::path work_dir_;
+  auth::CommandKey key_;
   std::vector<Process> processes_;
 };
 

@@ -76,7 +76,7 @@ ModeResult RunMode(const DevicesBenchArgs& args, double time_scale,
   bus::Bus bus(ClientBusOptions(options, "avc-bench"));
   bus::EventLoop loop;
   bus.AttachTo(loop);
-  client::CellClient client(bus, loop);
+  client::CellClient client(bus, loop, "avc-bench", cell.key());
   try {
     client.WaitReady({"avc-sim", "avc-robot", "avc-turntable", "avc-camera"}, milliseconds(30000));
     client.Robot(avc::robot_command_t::KIND_POWER_ON, milliseconds(20000));

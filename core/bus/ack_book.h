@@ -19,12 +19,17 @@ class AckBook {
 
   // Publishes the ack on ACK and remembers it as the request's latest answer.
   void Send(const std::string& request_id, int8_t status, const std::string& reason);
+  // Publishes the ack without remembering it: the answer to a message that is not a genuine
+  // request (e.g. one failing authentication), which must not become the request id's answer.
+  void SendUnremembered(const std::string& request_id, int8_t status, const std::string& reason);
   // A request seen before gets its latest answer again: returns true after re-sending it.
   bool Repeat(const std::string& request_id);
   bool Knows(const std::string& request_id) const { return last_.count(request_id) != 0; }
 
  private:
   Bus& bus_;
+  avc::ack_t Publish(const std::string& request_id, int8_t status, const std::string& reason);
+
   std::string service_;
   size_t remembered_;
   std::map<std::string, avc::ack_t> last_;

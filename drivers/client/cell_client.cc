@@ -8,6 +8,7 @@
 #include <avc/robot_state_t.hpp>
 #include <avc/turntable_state_t.hpp>
 #include <stdexcept>
+#include <utility>
 
 #include "core/bus/channels.h"
 #include "core/bus/heartbeat.h"
@@ -30,8 +31,11 @@ std::string SessionTag() {
 
 }  // namespace
 
-CellClient::CellClient(bus::Bus& bus, bus::EventLoop& loop, std::string name)
+CellClient::CellClient(bus::Bus& bus, bus::EventLoop& loop, std::string name,
+                       std::optional<auth::CommandKey> key)
     : bus_(bus), loop_(loop), id_prefix_(fmt::format("{}-{}-", name, SessionTag())) {
+  if (!key) key = auth::FindCommandKey(bus_.cell());
+  if (key) signer_.emplace(std::move(*key), bus_.options().source, bus_.cell());
   subscriptions_.push_back(
       bus_.Subscribe<avc::ack_t>(channels::kAck, [this](const avc::ack_t& ack, const bus::RxInfo&) {
         heard_.insert(ack.request_id);
@@ -124,7 +128,7 @@ double CellClient::Robot(int8_t kind, std::chrono::milliseconds timeout) {
   command.request_id = NextId("robot");
   command.kind = kind;
   return SendUntilDone(
-      command.request_id, [&] { bus_.Publish(channels::kRobotCommand, command); }, timeout);
+      command.request_id, [&] { PublishCommand(channels::kRobotCommand, command); }, timeout);
 }
 
 double CellClient::MoveJoints(const kinematics::JointVector& q, std::chrono::milliseconds timeout) {
@@ -133,7 +137,7 @@ double CellClient::MoveJoints(const kinematics::JointVector& q, std::chrono::mil
   command.kind = avc::robot_command_t::KIND_MOVE_JOINTS;
   for (int i = 0; i < 6; ++i) command.q[i] = q[i];
   return SendUntilDone(
-      command.request_id, [&] { bus_.Publish(channels::kRobotCommand, command); }, timeout);
+      command.request_id, [&] { PublishCommand(channels::kRobotCommand, command); }, timeout);
 }
 
 double CellClient::TurntableGoto(double angle_rad, std::chrono::milliseconds timeout) {
@@ -142,7 +146,7 @@ double CellClient::TurntableGoto(double angle_rad, std::chrono::milliseconds tim
   command.kind = avc::turntable_command_t::KIND_GOTO;
   command.angle = angle_rad;
   return SendUntilDone(
-      command.request_id, [&] { bus_.Publish(channels::kTurntableCommand, command); }, timeout);
+      command.request_id, [&] { PublishCommand(channels::kTurntableCommand, command); }, timeout);
 }
 
 CapturedView CellClient::Capture(const std::string& image_id, int8_t encoding,

@@ -7,6 +7,8 @@
 // re-sending a request until it is acknowledged (a repeated request id never repeats work).
 // Request ids carry a per-client session tag: drivers answer a repeated id from memory, so a
 // restarted program counting from 1 again must not reuse the ids of its previous life.
+// Robot and turntable commands are signed with the cell's key (core/auth) when the client has
+// one; every re-send is signed anew.
 
 #include <Eigen/Geometry>
 #include <avc/ack_t.hpp>
@@ -18,10 +20,13 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "core/auth/command_auth.h"
 #include "core/bus/bus.h"
 #include "core/bus/event_loop.h"
 #include "core/kinematics/dh_parameters.h"
@@ -46,8 +51,12 @@ struct CapturedView {
 
 class CellClient {
  public:
-  // `name` starts every request id and names this client as a product consumer.
-  CellClient(bus::Bus& bus, bus::EventLoop& loop, std::string name = "avc-bench");
+  // `name` starts every request id and names this client as a product consumer. Motion
+  // commands are signed with `key`, else with the cell's key at auth::DefaultKeyFile(cell) when
+  // that file exists (else they go unsigned, which only a cell allowing that obeys). Throws
+  // auth::KeyError for a key file that exists but is unusable.
+  CellClient(bus::Bus& bus, bus::EventLoop& loop, std::string name = "avc-bench",
+             std::optional<auth::CommandKey> key = std::nullopt);
   ~CellClient();
   CellClient(const CellClient&) = delete;
   CellClient& operator=(const CellClient&) = delete;
@@ -74,6 +83,12 @@ class CellClient {
 
  private:
   std::string NextId(const std::string& what);
+  // Signs (when there is a key) and publishes a robot or turntable command.
+  template <class Command>
+  void PublishCommand(std::string_view channel, Command& command) {
+    if (signer_) signer_->Sign(command, bus_.FullChannel(channel));
+    bus_.Publish(channel, command);
+  }
   // Publishes with `send` until the service acknowledges `id` at all (a datagram can be lost;
   // re-sending an id is harmless), then runs the loop until it is DONE. Returns the seconds
   // from the first send.
@@ -82,6 +97,7 @@ class CellClient {
 
   bus::Bus& bus_;
   bus::EventLoop& loop_;
+  std::optional<auth::CommandSigner> signer_;
   std::vector<bus::Bus::SubscriptionId> subscriptions_;
   std::unique_ptr<products::ProductReceiver> receiver_;
   std::string id_prefix_;                         // name-session-

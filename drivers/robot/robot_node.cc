@@ -42,6 +42,7 @@ std::string RobotNodeConfig::Validate() const {
     return fmt::format("state rate {} Hz must be > 0", state_rate_hz);
   }
   if (auto error = envelope.Validate(); !error.empty()) return "safety envelope: " + error;
+  if (auto error = auth.Validate(); !error.empty()) return error;
   return {};
 }
 
@@ -58,6 +59,8 @@ RobotNode::RobotNode(bus::Bus& bus, bus::EventLoop& loop, bus::HeartbeatPublishe
   if (auto error = config_.Validate(); !error.empty()) {
     throw std::invalid_argument("avc-robot config: " + error);
   }
+  verifier_.emplace(config_.auth, bus_.FullChannel(channels::kRobotCommand), bus_.cell());
+  verifier_->LogStartup(config_.service);
   command_subscription_ = bus_.Subscribe<avc::robot_command_t>(
       channels::kRobotCommand,
       [this](const avc::robot_command_t& command, const bus::RxInfo&) { Handle(command); });

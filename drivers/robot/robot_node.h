@@ -19,6 +19,7 @@
 #include <optional>
 #include <string>
 
+#include "core/auth/command_auth.h"
 #include "core/bus/ack_book.h"
 #include "core/bus/bus.h"
 #include "core/bus/event_loop.h"
@@ -58,6 +59,9 @@ struct RobotNodeConfig {
   // The service whose heartbeat guards motions ("" disables the watchdog).
   std::string watchdog_service = "avc-orchestrator";
   Milliseconds watchdog_timeout{500};
+  // Who may move the arm: every command but STOP and POWER_OFF must be signed with the cell's
+  // key (core/auth) unless unsigned commands are allowed explicitly.
+  auth::VerifierOptions auth;
 
   // Empty when usable, else what is wrong.
   std::string Validate() const;
@@ -106,6 +110,8 @@ class RobotNode {
   void UpdateHeartbeat();
 
   void Ack(const std::string& request_id, int8_t status, const std::string& reason);
+  // True when the command is authentic and for this cell; else the refusal is sent and logged.
+  bool Authentic(const avc::robot_command_t& command);
   // Returns a refusal reason, or empty after the motion was sent.
   std::string StartMotion(const avc::robot_command_t& command);
   std::string RunDashboard(const avc::robot_command_t& command);
@@ -119,6 +125,7 @@ class RobotNode {
   bus::HeartbeatPublisher& heartbeat_;
   RobotNodeConfig config_;
   bus::AckBook acks_;
+  std::optional<auth::CommandVerifier> verifier_;
   ControllerLink link_;
   HeartbeatWatchdog watchdog_;
   bool unwatched_logged_ = false;

@@ -31,11 +31,23 @@ void RobotNode::Ack(const std::string& request_id, int8_t status, const std::str
   acks_.Send(request_id, status, reason);
 }
 
+bool RobotNode::Authentic(const Command& command) {
+  const bool stops = command.kind == Command::KIND_STOP || command.kind == Command::KIND_POWER_OFF;
+  const std::string why = verifier_->Check(command, /*signature_optional=*/stops);
+  if (why.empty()) return true;
+  log::Warn("{}: rejected command '{}' (kind {}): {}", config_.service, command.request_id,
+            command.kind, why);
+  // Not remembered: a forged or replayed copy must not become the genuine request's answer.
+  acks_.SendUnremembered(command.request_id, avc::ack_t::STATUS_REFUSED, "authentication: " + why);
+  return false;
+}
+
 void RobotNode::Handle(const Command& command) {
   if (command.request_id.empty()) {
     Ack("", avc::ack_t::STATUS_REFUSED, "robot command without a request id");
     return;
   }
+  if (!Authentic(command)) return;
   if (acks_.Repeat(command.request_id)) return;  // idempotent: the last answer, nothing else
   if (!link_.connected()) {
     Ack(command.request_id, avc::ack_t::STATUS_REFUSED, error_);

@@ -50,6 +50,7 @@ std::string TurntableNodeOptions::Validate() const {
   if (failures_before_reconnect < 1) return "failures before reconnect must be >= 1";
   const std::string table = device_options.table.Validate();
   if (!table.empty()) return table;
+  if (std::string problem = auth.Validate(); !problem.empty()) return problem;
   return controller.Validate();
 }
 
@@ -64,6 +65,8 @@ TurntableNode::TurntableNode(bus::Bus& bus, bus::EventLoop& loop,
       reconnect_delay_(options_.reconnect_min) {
   const std::string problem = options_.Validate();
   if (!problem.empty()) throw std::invalid_argument("avc-turntable: " + problem);
+  verifier_.emplace(options_.auth, bus_.FullChannel(channels::kTurntableCommand), bus_.cell());
+  verifier_->LogStartup(options_.service);
   subscription_ = bus_.Subscribe<avc::turntable_command_t>(
       channels::kTurntableCommand,
       [this](const avc::turntable_command_t& command, const bus::RxInfo&) { OnCommand(command); });
@@ -172,7 +175,18 @@ std::string TurntableNode::Validate(const avc::turntable_command_t& command) con
   return "";
 }
 
+bool TurntableNode::Authentic(const avc::turntable_command_t& command) {
+  const bool stop = command.kind == avc::turntable_command_t::KIND_STOP;
+  const std::string why = verifier_->Check(command, /*signature_optional=*/stop);
+  if (why.empty()) return true;
+  log::Warn("turntable: rejected {} '{}': {}", KindName(command.kind), command.request_id, why);
+  // Not remembered: a forged or replayed copy must not become the genuine request's answer.
+  acks_.SendUnremembered(command.request_id, avc::ack_t::STATUS_REFUSED, "authentication: " + why);
+  return false;
+}
+
 void TurntableNode::OnCommand(const avc::turntable_command_t& command) {
+  if (!Authentic(command)) return;
   if (acks_.Repeat(command.request_id)) return;  // answered before: never move again
   const std::string refusal = Validate(command);
   if (!refusal.empty()) {

@@ -14,8 +14,10 @@
 #include <avc/turntable_command_t.hpp>
 #include <chrono>
 #include <memory>
+#include <optional>
 #include <string>
 
+#include "core/auth/command_auth.h"
 #include "core/bus/ack_book.h"
 #include "core/bus/bus.h"
 #include "core/bus/event_loop.h"
@@ -37,6 +39,9 @@ struct TurntableNodeOptions {
   std::chrono::milliseconds reconnect_max{5000};
   // Consecutive failed polls after which the port is closed and reopened.
   int failures_before_reconnect = 3;
+  // Who may turn the table: every command but STOP must be signed with the cell's key
+  // (core/auth) unless unsigned commands are allowed explicitly.
+  auth::VerifierOptions auth;
 
   std::string Validate() const;
 };
@@ -59,6 +64,8 @@ class TurntableNode {
 
  private:
   void OnCommand(const avc::turntable_command_t& command);
+  // True when the command is authentic and for this cell; else the refusal is sent and logged.
+  bool Authentic(const avc::turntable_command_t& command);
   // Starts the command's move; returns a refusal reason, or "" when accepted.
   std::string Validate(const avc::turntable_command_t& command) const;
   void Start(const avc::turntable_command_t& command);
@@ -77,6 +84,7 @@ class TurntableNode {
   bus::HeartbeatPublisher& heartbeat_;
   TurntableNodeOptions options_;
   bus::AckBook acks_;
+  std::optional<auth::CommandVerifier> verifier_;
   std::unique_ptr<Clock> clock_;
 
   std::unique_ptr<Lt360Device> device_;

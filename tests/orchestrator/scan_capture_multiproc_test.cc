@@ -79,7 +79,7 @@ TEST(ScanCaptureMultiproc, KeepsEveryImageAndResumesWithoutCapturingAgain) {
   try {
     std::vector<cv::Mat> first_masks;
     {
-      client::CellClient client(bus, loop, "avc-orchestrator");
+      client::CellClient client(bus, loop, "avc-orchestrator", cell.key());
       client.WaitReady({"avc-sim", "avc-robot", "avc-turntable", "avc-camera"},
                        milliseconds(20000));
       client.Robot(avc::robot_command_t::KIND_POWER_ON, milliseconds(10000));
@@ -120,7 +120,7 @@ TEST(ScanCaptureMultiproc, KeepsEveryImageAndResumesWithoutCapturingAgain) {
     EXPECT_EQ(record.captures[1].image_id, "view_0001");
     fs::remove(scan_dir / record.captures[1].file);
 
-    client::CellClient client(bus, loop, "avc-orchestrator");
+    client::CellClient client(bus, loop, "avc-orchestrator", cell.key());
     client.WaitReady({"avc-robot", "avc-turntable", "avc-camera"}, milliseconds(20000));
     ScanCapture resumed(client, scan_dir, record, [&] { SaveScanRecord(record, scan_dir); });
     const std::optional<cv::Mat> again = resumed(views[0]);

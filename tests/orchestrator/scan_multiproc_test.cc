@@ -51,14 +51,14 @@ void WriteNominalCalibration(const fs::path& path) {
 
 class ScanProcess {
  public:
-  ScanProcess(const std::vector<std::string>& args, const bus::BusOptions& bus,
+  ScanProcess(const std::vector<std::string>& args, const bus::BusOptions& bus, const fs::path& key,
               const fs::path& log) {
     launch::SpawnSpec spec;
     spec.argv = {testing::Executable("avc").string(), "scan"};
     spec.argv.insert(spec.argv.end(), args.begin(), args.end());
     spec.argv.insert(spec.argv.end(),
                      {"--lcm-url", bus.control_url, "--bulk-url", bus.bulk_url, "--cell", bus.cell,
-                      "--max-views", "14", "--views-per-height", "6"});
+                      "--max-views", "14", "--views-per-height", "6", "--key", key.string()});
     spec.log_file = log.string();
     child_.emplace(launch::ChildProcess::Spawn(spec));
   }
@@ -103,7 +103,8 @@ TEST(ScanMultiproc, PausedKilledAndResumedScanFinishesWithEveryImageOnce) {
   const fs::path log = dir.path() / "scan.log";
 
   {  // SIGTERM: paused, resumable.
-    ScanProcess scan({scan_dir.string(), "--calibration", calibration.string()}, bus_options, log);
+    ScanProcess scan({scan_dir.string(), "--calibration", calibration.string()}, bus_options,
+                     cell.key().file, log);
     ASSERT_TRUE(WaitForCaptures(scan_dir, 3, scan.child()))
         << testing::ReadFile(log) << cell.LogTails();
     scan.child().Signal(SIGTERM);
@@ -119,14 +120,14 @@ TEST(ScanMultiproc, PausedKilledAndResumedScanFinishesWithEveryImageOnce) {
   }
   {  // A new scan in the same directory is refused: it would mix two plants.
     ScanProcess again({scan_dir.string(), "--calibration", calibration.string()}, bus_options,
-                      dir.path() / "again.log");
+                      cell.key().file, dir.path() / "again.log");
     const auto status = again.child().WaitFor(milliseconds(20000));
     ASSERT_TRUE(status.has_value());
     EXPECT_TRUE(WIFEXITED(*status) && WEXITSTATUS(*status) == 1);
     EXPECT_NE(testing::ReadFile(dir.path() / "again.log").find("--resume"), std::string::npos);
   }
   {  // Resumed, then killed outright halfway.
-    ScanProcess scan({"--resume", scan_dir.string()}, bus_options, log);
+    ScanProcess scan({"--resume", scan_dir.string()}, bus_options, cell.key().file, log);
     ASSERT_TRUE(WaitForCaptures(scan_dir, 8, scan.child()))
         << testing::ReadFile(log) << cell.LogTails();
     scan.child().Signal(SIGKILL);
@@ -140,7 +141,7 @@ TEST(ScanMultiproc, PausedKilledAndResumedScanFinishesWithEveryImageOnce) {
     bus.Subscribe<avc::orchestrator_state_t>(channels::kOrchestratorState,
                                              [&](const avc::orchestrator_state_t& state,
                                                  const bus::RxInfo&) { states.push_back(state); });
-    ScanProcess scan({"--resume", scan_dir.string()}, bus_options, log);
+    ScanProcess scan({"--resume", scan_dir.string()}, bus_options, cell.key().file, log);
     loop.RunUntil([&] { return scan.child().TryWait().has_value(); }, milliseconds(240000));
     const auto status = scan.child().WaitFor(milliseconds(1000));
     ASSERT_TRUE(status.has_value()) << "scan did not finish\n" << testing::ReadFile(log);

@@ -15,6 +15,7 @@
 #include "core/calibration/pipeline/calibration_dataset.h"
 #include "drivers/client/cell_client.h"
 #include "services/calibrator/calibration_collector.h"
+#include "tools/avc/auth_flags.h"
 #include "tools/avc/bus_flags.h"
 #include "tools/avc/commands.h"
 #include "tools/avc/run_guarded.h"
@@ -33,6 +34,7 @@ struct CalibrateArgs {
   // Where the turntable's top centre roughly is in the robot base frame (metres), for planning.
   std::vector<double> table_in_base;
   std::string output;  // calibration.yaml; default <folder>/calibration.yaml
+  AuthFlags auth;
   bus::BusFlags bus;
 };
 
@@ -70,7 +72,7 @@ int RunCollect(const CalibrateArgs& args) {
   bus::Bus bus(bus::ResolveBusOptions(args.bus, "avc-calibrate"));
   bus::EventLoop loop;
   bus.AttachTo(loop);
-  client::CellClient cell(bus, loop);
+  client::CellClient cell(bus, loop, "avc-calibrate", SenderKey(args.auth, bus.cell()));
   const calibration::CalibrationDataset dataset =
       calibrator::CollectCalibrationDataset(cell, options, Progress);
   std::cerr << "\n";
@@ -124,6 +126,7 @@ void AddCollectFlags(CLI::App& command, CalibrateArgs& args) {
   command.add_option("--angles", args.plan.table_angles, "table angles over a full turn")
       ->capture_default_str()
       ->check(CLI::Range(3, 360));
+  AddSenderKeyFlag(&command, &args.auth);
   AddBusFlags(&command, &args.bus);
 }
 

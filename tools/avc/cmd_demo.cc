@@ -88,7 +88,7 @@ fs::path CalibrateSimulatedCell(const DemoArgs& args, const fs::path& work_dir) 
   bus::Bus bus(options.bus);
   bus::EventLoop loop;
   bus.AttachTo(loop);
-  client::CellClient client(bus, loop, "avc-demo");
+  client::CellClient client(bus, loop, "avc-demo", cell.key());
   calibrator::CollectOptions collect;
   collect.folder = work_dir / "dataset";
   collect.board.cols = 9;
@@ -159,7 +159,7 @@ int RunDemo(const DemoArgs& args) {
   bus::EventLoop loop;
   bus.AttachTo(loop);
   loop.QuitOnTerminationSignals();
-  client::CellClient client(bus, loop, "avc-scan");
+  client::CellClient client(bus, loop, "avc-scan", cell.key());
 
   orchestrator::ScanRunOptions scan;
   scan.scan_dir = dir;

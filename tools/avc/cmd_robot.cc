@@ -9,6 +9,7 @@
 
 #include "core/bus/service_runtime.h"
 #include "drivers/robot/robot_node.h"
+#include "tools/avc/auth_flags.h"
 #include "tools/avc/bus_flags.h"
 #include "tools/avc/commands.h"
 #include "tools/avc/run_guarded.h"
@@ -21,6 +22,7 @@ struct RobotArgs {
   std::optional<double> table_z;
   std::vector<double> keep_out;
   int64_t watchdog_timeout_ms = 500;
+  AuthFlags auth;
   bus::BusFlags bus;
 };
 
@@ -34,6 +36,7 @@ int RunRobot(RobotArgs args) {
   }
   config.watchdog_timeout = std::chrono::milliseconds(args.watchdog_timeout_ms);
   bus::ServiceRuntime runtime(config.service, args.bus);
+  config.auth = DriverAuth(args.auth, runtime.bus().cell());
   robot::RobotNode node(runtime.bus(), runtime.loop(), runtime.heartbeat(), config);
   runtime.OnStop([&] { node.Shutdown(); });
   return runtime.Run();
@@ -51,6 +54,7 @@ void RegisterRobot(CLI::App& root, int* exit_code) {
       "State comes from RTDE (30004) at the controller's rate; motions are URScript programs on\n"
       "the secondary port (30002), checked against the safety envelope before anything is sent;\n"
       "power, brakes and protective stops go through the dashboard (29999).\n"
+      "Every command but STOP and POWER_OFF must be signed with the cell's key (avc key).\n"
       "Real arm: avc robot --host 192.168.1.10   Simulated cell: avc robot --host 127.0.0.1");
   command->add_option("--host", c.host, "controller address")->capture_default_str();
   command->add_option("--rtde-port", c.rtde_port, "RTDE port")->capture_default_str();
@@ -75,6 +79,7 @@ void RegisterRobot(CLI::App& root, int* exit_code) {
       ->add_option("--watchdog-timeout-ms", args->watchdog_timeout_ms,
                    "heartbeat silence after which a guarded motion is stopped")
       ->capture_default_str();
+  AddDriverAuthFlags(command, &args->auth);
   AddBusFlags(command, &args->bus);
   SetGuardedRun(command, exit_code, [args] { return RunRobot(*args); });
 }

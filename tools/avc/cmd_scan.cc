@@ -14,6 +14,7 @@
 #include "drivers/client/cell_client.h"
 #include "orchestrator/scan_run.h"
 #include "orchestrator/scan_states.h"
+#include "tools/avc/auth_flags.h"
 #include "tools/avc/bus_flags.h"
 #include "tools/avc/commands.h"
 #include "tools/avc/run_guarded.h"
@@ -34,6 +35,7 @@ struct ScanArgs {
   int max_views = planner::ActiveVisionOptions{}.max_views;
   int views_per_level = planner::ActiveVisionOptions{}.views_per_level;
   double ready_timeout_s = 30;
+  AuthFlags auth;
   bus::BusFlags bus;
 };
 
@@ -72,7 +74,7 @@ int RunScanCommand(const ScanArgs& args) {
   bus.AttachTo(loop);
   loop.QuitOnTerminationSignals();
   options.stop_requested = [&loop] { return loop.quitting(); };
-  client::CellClient cell(bus, loop, "avc-scan");
+  client::CellClient cell(bus, loop, "avc-scan", SenderKey(args.auth, bus.cell()));
 
   ScanStateBroadcast broadcast(bus, loop);
   const orchestrator::ScanOutcome outcome =
@@ -117,6 +119,7 @@ void RegisterScan(CLI::App& root, int* exit_code) {
                    "seconds to wait for the services a step needs")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
+  AddSenderKeyFlag(command, &args->auth);
   AddBusFlags(command, &args->bus);
   SetGuardedRun(command, exit_code, [args] { return RunScanCommand(*args); });
 }

@@ -12,6 +12,7 @@
 #include "drivers/turntable/turntable_node.h"
 #include "drivers/turntable/usb_serial_adapters.h"
 #include "sim/emulators/lt360/lt360_emulator.h"
+#include "tools/avc/auth_flags.h"
 #include "tools/avc/bus_flags.h"
 #include "tools/avc/commands.h"
 #include "tools/avc/run_guarded.h"
@@ -32,6 +33,7 @@ struct TurntableArgs {
   double emulate_sigma_deg = 0.05;
   double emulate_accel_deg_s2 = 180;
   uint64_t emulate_seed = 1;
+  AuthFlags auth;
   bus::BusFlags bus;
 };
 
@@ -68,6 +70,7 @@ int RunTurntable(const TurntableArgs& args) {
   }
 
   bus::ServiceRuntime runtime(options.service, args.bus);
+  options.auth = DriverAuth(args.auth, runtime.bus().cell());
   turntable::TurntableNode node(runtime.bus(), runtime.loop(), runtime.heartbeat(), options);
   runtime.OnStop([&] { node.Shutdown(); });
   return runtime.Run();
@@ -87,6 +90,7 @@ void RegisterTurntable(CLI::App& root, int* exit_code) {
       "Takes TURNTABLE_COMMAND, answers on ACK and publishes TURNTABLE_STATE (~10 Hz) until\n"
       "SIGINT/SIGTERM; a moving table is stopped first. --emulate starts an LT360 emulator on a\n"
       "pseudo-terminal inside the process and drives it through the real serial backend.\n"
+      "Every command but STOP must be signed with the cell's key (avc key).\n"
       "Angles grow counter-clockwise seen from above.");
   command->add_option("--device,-d", args->device, "serial device, e.g. /dev/ttyUSB0");
   command->add_option("--baud", args->baud, "baud rate (8N1)")->capture_default_str();
@@ -113,6 +117,7 @@ void RegisterTurntable(CLI::App& root, int* exit_code) {
       ->capture_default_str();
   command->add_option("--emulate-seed", args->emulate_seed, "seed of the emulated angle error")
       ->capture_default_str();
+  AddDriverAuthFlags(command, &args->auth);
   AddBusFlags(command, &args->bus);
 
   auto list_args = std::make_shared<ListArgs>();

@@ -31,5 +31,6 @@ void RegisterSurfacer(CLI::App& root, int* exit_code);
 void RegisterScan(CLI::App& root, int* exit_code);
 void RegisterDemo(CLI::App& root, int* exit_code);
 void RegisterReport(CLI::App& root, int* exit_code);
+void RegisterKey(CLI::App& root, int* exit_code);
 
 }  // namespace avc::cli

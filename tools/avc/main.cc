@@ -57,6 +57,7 @@ int main(int argc, char** argv) {
   avc::cli::RegisterScan(app, &exit_code);
   avc::cli::RegisterDemo(app, &exit_code);
   avc::cli::RegisterReport(app, &exit_code);
+  avc::cli::RegisterKey(app, &exit_code);
   ShortenListings(app);
   try {
     app.parse(argc, argv);

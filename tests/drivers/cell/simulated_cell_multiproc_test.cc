@@ -16,6 +16,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "bench/devices/cell_processes.h"
+#include "core/auth/command_key.h"
 #include "core/bus/bus.h"
 #include "core/bus/bus_options.h"
 #include "core/camera/camera_io.h"
@@ -51,7 +52,7 @@ TEST(SimulatedCellMultiproc, PlannedViewIsCapturedFromTheTruePoseThroughEveryRea
   bus::Bus bus(bus_options);
   bus::EventLoop loop;
   bus.AttachTo(loop);
-  client::CellClient client(bus, loop);
+  client::CellClient client(bus, loop, "avc-bench", cell.key());
   try {
     client.WaitReady({"avc-sim", "avc-robot", "avc-turntable", "avc-camera"}, milliseconds(20000));
     client.Robot(avc::robot_command_t::KIND_POWER_ON, milliseconds(10000));
@@ -113,12 +114,15 @@ TEST(SimulatedCellMultiproc, SimCellLaunchFileRunsTheCellUnderAvcUp) {
   spec.argv = {testing::Executable("avc").string(), "up", (dir / "sim-cell.toml").string()};
   spec.log_file = (dir / "up.log").string();
   spec.env["HOME"] = dir.path().string();  // the camera driver's libgphoto2 settings
+  // The drivers find the cell's key where a user's would be: AVC_KEY_DIR/<cell>.key.
+  spec.env["AVC_KEY_DIR"] = (dir / "keys").string();
+  const auth::CommandKey key = auth::GenerateCommandKey(dir / "keys" / (bus_options.cell + ".key"));
   launch::ChildProcess up = launch::ChildProcess::Spawn(spec);
 
   bus::Bus bus(bus_options);
   bus::EventLoop loop;
   bus.AttachTo(loop);
-  client::CellClient client(bus, loop);
+  client::CellClient client(bus, loop, "avc-bench", key);
   try {
     client.WaitReady({"avc-sim", "avc-robot", "avc-turntable", "avc-camera", "avc-record"},
                      milliseconds(30000));

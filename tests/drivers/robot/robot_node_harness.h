@@ -2,7 +2,8 @@
 
 // A RobotNode on an in-process bus (memq://) and an EventLoop, with the UR5 emulator on
 // ephemeral ports and a scaled clock: what the robot node tests share. Records every ack,
-// robot_state_t and the node's own heartbeat.
+// robot_state_t and the node's own heartbeat. Commands are signed with the harness's cell key
+// (Send), unless a test sends them itself.
 
 #include <gtest/gtest.h>
 
@@ -17,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "core/auth/command_auth.h"
 #include "core/bus/bus.h"
 #include "core/bus/channels.h"
 #include "core/bus/event_loop.h"
@@ -25,6 +27,7 @@
 #include "sim/cell/perturbation.h"
 #include "sim/emulators/clock/emulator_clock.h"
 #include "sim/emulators/ur5/ur5_emulator.h"
+#include "tests/support/test_command_key.h"
 
 namespace avc::robot::testing {
 
@@ -33,6 +36,8 @@ using Ack = avc::ack_t;
 using std::chrono::milliseconds;
 
 inline const std::array<double, 6> kTarget = {0.6, -1.3, 1.5, -1.8, -1.5, 0.2};
+
+using avc::testing::TestCommandKey;
 
 inline sim::ur5::Ur5EmulatorOptions EmulatorOptions() {
   sim::ur5::Ur5EmulatorOptions options;
@@ -44,7 +49,8 @@ inline sim::ur5::Ur5EmulatorOptions EmulatorOptions() {
 struct RobotNodeHarness {
   RobotNodeHarness()
       : bus(bus::InProcessBusOptions("cellr", "robot-test")),
-        heartbeat(bus, loop, "avc-robot", milliseconds(50)) {
+        heartbeat(bus, loop, "avc-robot", milliseconds(50)),
+        signer(TestCommandKey(), bus.options().source, bus.cell()) {
     bus.AttachTo(loop);
     bus.Subscribe<Ack>(channels::kAck,
                        [this](const Ack& ack, const bus::RxInfo&) { acks.push_back(ack); });
@@ -58,6 +64,7 @@ struct RobotNodeHarness {
     config.envelope.joint_min[0] = -1.0;
     config.envelope.joint_max[0] = 1.2;
     config.motion_timeout = milliseconds(10000);
+    config.auth.key = TestCommandKey();
   }
 
   // The emulator with simulated time `scale` times faster than real time.
@@ -96,7 +103,13 @@ struct RobotNodeHarness {
     return std::nullopt;
   }
 
-  void Send(Command command) { bus.Publish(channels::kRobotCommand, command); }
+  // Signed with the cell's key, as CellClient sends it.
+  void Send(Command command) {
+    signer.Sign(command, bus.FullChannel(channels::kRobotCommand));
+    bus.Publish(channels::kRobotCommand, command);
+  }
+  // Exactly as given: unsigned, forged or replayed.
+  void SendAsIs(Command command) { bus.Publish(channels::kRobotCommand, command); }
 
   // Sends a command and waits for its final answer (status -1 when none came).
   Ack Run(Command command, milliseconds timeout = milliseconds(5000)) {
@@ -141,6 +154,7 @@ struct RobotNodeHarness {
   bus::EventLoop loop;
   bus::Bus bus;
   bus::HeartbeatPublisher heartbeat;
+  auth::CommandSigner signer;
   RobotNodeConfig config;
   sim::CellTruth cell;
   std::unique_ptr<sim::ur5::Ur5Emulator> emulator;

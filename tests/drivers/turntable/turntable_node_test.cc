@@ -20,6 +20,7 @@
 #include "core/bus/channels.h"
 #include "core/bus/heartbeat.h"
 #include "sim/emulators/lt360/lt360_emulator.h"
+#include "tests/support/test_command_key.h"
 #include "tests/support/test_support.h"
 
 namespace avc::turntable {
@@ -34,7 +35,8 @@ struct Harness {
                    std::function<void(TurntableNodeOptions&)> tune = {})
       : bus(bus::InProcessBusOptions()),
         heartbeat(bus, loop, "avc-turntable", milliseconds(50)),
-        emulator_clock(std::make_shared<sim::SteppedEmulatorClock>(0.25)) {
+        emulator_clock(std::make_shared<sim::SteppedEmulatorClock>(0.25)),
+        signer(testing::TestCommandKey(), bus.options().source, bus.cell()) {
     sim::Lt360EmulatorOptions emulator_options;
     emulator_options.speed_deg_s = emulator_speed_deg_s;
     emulator = std::make_unique<sim::Lt360Emulator>(emulator_options, emulator_clock);
@@ -54,6 +56,7 @@ struct Harness {
     options.reconnect_min = milliseconds(50);
     options.reconnect_max = milliseconds(200);
     options.controller.default_speed_deg_s = emulator_speed_deg_s;
+    options.auth.key = testing::TestCommandKey();
     if (tune) tune(options);
     node = std::make_unique<TurntableNode>(bus, loop, heartbeat, options);
   }
@@ -64,6 +67,7 @@ struct Harness {
     command.kind = kind;
     command.angle = angle;
     command.speed = speed;
+    signer.Sign(command, bus.FullChannel(channels::kTurntableCommand));
     bus.Publish(channels::kTurntableCommand, command);
   }
 
@@ -95,6 +99,7 @@ struct Harness {
   bus::EventLoop loop;
   bus::HeartbeatPublisher heartbeat;
   std::shared_ptr<sim::SteppedEmulatorClock> emulator_clock;
+  auth::CommandSigner signer;
   std::unique_ptr<sim::Lt360Emulator> emulator;
   TurntableNodeOptions options;
   std::unique_ptr<TurntableNode> node;
