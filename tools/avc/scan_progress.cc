@@ -39,7 +39,11 @@ ScanStateBroadcast::ScanStateBroadcast(bus::Bus& bus, bus::EventLoop& loop)
     : bus_(bus),
       loop_(loop),
       timer_(loop.AddTimer(
-          std::chrono::seconds(1), [this] { Publish(); }, /*repeating=*/true)) {}
+          std::chrono::seconds(1), [this] { Publish(); }, /*repeating=*/true)),
+      // Well inside the robot watchdog's 500 ms, so a busy moment of the loop is no silence.
+      heartbeat_(bus, "avc-orchestrator", std::chrono::milliseconds(100)) {
+  heartbeat_.Set(bus::ServiceState::kReady, "starting a scan");
+}
 
 ScanStateBroadcast::~ScanStateBroadcast() { loop_.CancelTimer(timer_); }
 
@@ -50,6 +54,14 @@ void ScanStateBroadcast::operator()(const orchestrator::ScanProgress& progress) 
   }
   last_ = progress;
   Publish();
+  const std::string state(orchestrator::StateName(progress.state));
+  if (progress.state == ScanState::kFault) {
+    heartbeat_.Set(bus::ServiceState::kError, progress.detail);
+  } else if (progress.state == ScanState::kPaused || progress.state == ScanState::kDone) {
+    heartbeat_.Set(bus::ServiceState::kReady, state);
+  } else {
+    heartbeat_.Set(bus::ServiceState::kBusy, state);
+  }
 }
 
 void ScanStateBroadcast::Publish() {

@@ -6,6 +6,7 @@
 
 #include <optional>
 
+#include "core/bus/background_heartbeat.h"
 #include "core/bus/bus.h"
 #include "core/bus/event_loop.h"
 #include "orchestrator/scan_run.h"
@@ -16,7 +17,11 @@ void ShowScanProgress(const orchestrator::ScanProgress& progress);
 
 // Shows each progress event and publishes the scan's state (orchestrator_state_t on ORCH_STATE)
 // on every change and again every second while the loop runs (the scan runs the loop whenever
-// it waits on the cell; not during the reconstruction's computing).
+// it waits on the cell; not during the reconstruction's computing). The scan is the cell's
+// orchestrator: it also beats as "avc-orchestrator" ten times a second from a thread of its
+// own (so planning and reconstruction are not silence), which arms the robot driver's
+// watchdog: when the scan dies or loses the network while the arm moves, the arm is stopped
+// within 500 ms.
 class ScanStateBroadcast {
  public:
   ScanStateBroadcast(bus::Bus& bus, bus::EventLoop& loop);
@@ -32,6 +37,7 @@ class ScanStateBroadcast {
   bus::Bus& bus_;
   bus::EventLoop& loop_;
   bus::EventLoop::TimerId timer_;
+  bus::BackgroundHeartbeat heartbeat_;
   std::optional<orchestrator::ScanProgress> last_;
   std::string previous_state_;
 };
