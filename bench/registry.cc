@@ -1,5 +1,6 @@
 #include "bench/registry.h"
 
+#include "bench/auth/auth_bench.h"
 #include "bench/bus/bus_bench.h"
 #include "bench/calibration/calibration_bench.h"
 #include "bench/clustering/clustering_bench.h"
@@ -15,6 +16,10 @@ namespace avc::bench {
 
 const std::vector<Benchmark>& AllBenchmarks() {
   static const std::vector<Benchmark> benchmarks = {
+      {"auth",
+       "signed motion commands: the cost of signing and checking, and a live turntable driver "
+       "under unsigned, forged, altered, misdirected, wrong-cell, stale and replayed commands",
+       RunAuthBenchmark},
       {"bus",
        "5 MB image products between two processes at 10 Hz and in a burst, with the "
        "recommended and the default receive buffer: delivered/sent, retransmissions, latency",

@@ -6,12 +6,16 @@
 
 namespace avc::cli {
 
-void AddDriverAuthFlags(CLI::App* command, AuthFlags* flags) {
+void AddSenderKeyFlag(CLI::App* command, AuthFlags* flags) {
   command
       ->add_option("--key", flags->key_file,
                    "the cell's motion-command key (default: $AVC_KEY_DIR/<cell>.key, else "
                    "~/.config/avc/keys/<cell>.key; make one with `avc key generate`)")
       ->group("Authentication");
+}
+
+void AddDriverAuthFlags(CLI::App* command, AuthFlags* flags) {
+  AddSenderKeyFlag(command, flags);
   command
       ->add_flag("--allow-unsigned", flags->allow_unsigned,
                  "also obey unsigned motion commands (anyone on the network could move the "
@@ -23,14 +27,6 @@ void AddDriverAuthFlags(CLI::App* command, AuthFlags* flags) {
                    "machine's clock, s; 0 = no limit")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber)
-      ->group("Authentication");
-}
-
-void AddSenderKeyFlag(CLI::App* command, AuthFlags* flags) {
-  command
-      ->add_option("--key", flags->key_file,
-                   "the cell's motion-command key to sign with (default: $AVC_KEY_DIR/<cell>.key, "
-                   "else ~/.config/avc/keys/<cell>.key)")
       ->group("Authentication");
 }
 
