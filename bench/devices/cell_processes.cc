@@ -124,7 +124,7 @@ void CellProcesses::Start(const std::string& name, std::vector<std::string> argv
   spec.argv = std::move(argv);
   spec.log_file = (work_dir_ / (name + ".log")).string();
   spec.env["HOME"] = work_dir_.string();  // libgphoto2 keeps its settings under $HOME
-  processes_.push_back({name, spec.log_file, launch::ChildProcess::Spawn(spec)});
+  processes_.push_back({name, spec.log_file, spec, launch::ChildProcess::Spawn(spec)});
 }
 
 CellProcesses::~CellProcesses() {
@@ -133,6 +133,17 @@ CellProcesses::~CellProcesses() {
     it->child.Signal(SIGTERM);
     if (!it->child.WaitFor(std::chrono::milliseconds(5000))) it->child.Signal(SIGKILL);
   }
+}
+
+void CellProcesses::KillAndRestart(const std::string& name) {
+  for (Process& process : processes_) {
+    if (process.name != name) continue;
+    process.child.Signal(SIGKILL);
+    process.child.WaitFor(std::chrono::milliseconds(5000));
+    process.child = launch::ChildProcess::Spawn(process.spec);
+    return;
+  }
+  throw std::invalid_argument("no cell process named " + name);
 }
 
 std::vector<std::string> CellProcesses::Exited() {

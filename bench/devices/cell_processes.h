@@ -43,6 +43,11 @@ class CellProcesses {
   CellProcesses(const CellProcesses&) = delete;
   CellProcesses& operator=(const CellProcesses&) = delete;
 
+  // SIGKILLs the named process ("avc-robot", "avc-turntable", "avc-camera", "avc-sim"), as a
+  // crash would, and starts it again the same way (its log goes on). Throws
+  // std::invalid_argument for an unknown name.
+  void KillAndRestart(const std::string& name);
+
   // Names of processes that exited (with how), empty while all run.
   std::vector<std::string> Exited();
   // The last lines of every log, for error messages.
@@ -55,6 +60,7 @@ class CellProcesses {
   struct Process {
     std::string name;
     std::filesystem::path log;
+    launch::SpawnSpec spec;
     launch::ChildProcess child;
   };
   void Start(const std::string& name, std::vector<std::string> argv,

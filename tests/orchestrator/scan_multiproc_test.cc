@@ -2,7 +2,9 @@
 // processes on the real bus): a SIGTERM pauses the scan (exit 4, PAUSED in scan.json), a resume
 // killed with SIGKILL halfway leaves a consistent scan directory, and a second resume finishes
 // it (DONE): mesh, traits and report written, every image on disk exactly once and intact, and
-// no view captured twice beyond the one a kill can catch between capture and record.
+// no view captured twice beyond the one a kill can catch between capture and record. And the
+// drivers killed one after another during a scan (restarted as avc up would): resumed after any
+// fault, the scan finishes the same way.
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -10,8 +12,11 @@
 #include <algorithm>
 #include <avc/orchestrator_state_t.hpp>
 #include <csignal>
+#include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bench/devices/cell_processes.h"
@@ -85,21 +90,54 @@ bool WaitForCaptures(const fs::path& scan_dir, size_t count, launch::ChildProces
   return false;
 }
 
-TEST(ScanMultiproc, PausedKilledAndResumedScanFinishesWithEveryImageOnce) {
-  testing::TempDir dir("avc-scan-mp");
-  const fs::path scan_dir = dir.path() / "plant";
-  const fs::path calibration = dir.path() / "calibration.yaml";
-  WriteNominalCalibration(calibration);
-  const bus::BusOptions bus_options = bus::ResolveBusOptions({}, "scan-test");
-  bench::CellProcessOptions options =
-      bench::CellOptionsOnBus(bus_options, testing::Executable("avc"), dir.path());
+// The nominal simulated cell with every driver, small and fast, on the test's bus.
+bench::CellProcessOptions TestCell(const bus::BusOptions& bus, const fs::path& dir) {
+  bench::CellProcessOptions options = bench::CellOptionsOnBus(bus, testing::Executable("avc"), dir);
   options.time_scale = 20;
   options.triangles = 8000;
   options.width = kWidth;
   options.height = kHeight;
   options.png = true;
   options.extra_sim_args = {"--nominal-cell"};
-  bench::CellProcesses cell(options);
+  return options;
+}
+
+// A finished scan: DONE, every image on disk once and intact, no view captured again beyond
+// `extra_frames` (one per kill, caught between capture and record), the model and the report.
+void ExpectFinishedScan(const fs::path& scan_dir, const bench::CellProcesses& cell,
+                        size_t extra_frames) {
+  const ScanRecord done = LoadScanRecord(scan_dir);
+  EXPECT_EQ(done.state, ScanState::kDone);
+  EXPECT_TRUE(VerifyCaptures(done, scan_dir).empty());
+  size_t image_files = 0;
+  for (const auto& entry : fs::directory_iterator(scan_dir / "images")) {
+    image_files += entry.path().extension() == ".png";
+  }
+  EXPECT_EQ(image_files, done.captures.size()) << "one file per recorded capture, no strays";
+  const size_t frames = sim::ReadTruthLog(cell.truth_log()).size();
+  EXPECT_GE(frames, done.captures.size());
+  EXPECT_LE(frames, done.captures.size() + extra_frames) << "views captured again after stops";
+  int kept = 0;
+  for (const CaptureRecord& capture : done.captures) {
+    kept += capture.kept;
+    EXPECT_FALSE(capture.phase.empty()) << capture.image_id;
+  }
+  EXPECT_GE(kept, 10);
+  for (const char* file :
+       {"calibration.yaml", "cameras.json", "colmap/images.txt", "model/ppr.bt", "model/points.ply",
+        "model/clusters.ply", "model/mesh.ply", "model/traits.csv", "report.json", "report.html"}) {
+    EXPECT_TRUE(fs::exists(scan_dir / file)) << file;
+  }
+  EXPECT_GT(fs::file_size(scan_dir / "model/mesh.ply"), 1000u);
+}
+
+TEST(ScanMultiproc, PausedKilledAndResumedScanFinishesWithEveryImageOnce) {
+  testing::TempDir dir("avc-scan-mp");
+  const fs::path scan_dir = dir.path() / "plant";
+  const fs::path calibration = dir.path() / "calibration.yaml";
+  WriteNominalCalibration(calibration);
+  const bus::BusOptions bus_options = bus::ResolveBusOptions({}, "scan-test");
+  bench::CellProcesses cell(TestCell(bus_options, dir.path()));
   const fs::path log = dir.path() / "scan.log";
 
   {  // SIGTERM: paused, resumable.
@@ -160,34 +198,56 @@ TEST(ScanMultiproc, PausedKilledAndResumedScanFinishesWithEveryImageOnce) {
   };
   EXPECT_TRUE(heard("BUILD") && heard("SURFACE") && heard("REPORT"));
 
+  ExpectFinishedScan(scan_dir, cell, 2);
   const ScanRecord done = LoadScanRecord(scan_dir);
-  EXPECT_EQ(done.state, ScanState::kDone);
-  EXPECT_TRUE(VerifyCaptures(done, scan_dir).empty());
-  size_t image_files = 0;
-  for (const auto& entry : fs::directory_iterator(scan_dir / "images")) {
-    image_files += entry.path().extension() == ".png";
-  }
-  EXPECT_EQ(image_files, done.captures.size()) << "one file per recorded capture, no strays";
-  const size_t frames = sim::ReadTruthLog(cell.truth_log()).size();
-  EXPECT_GE(frames, done.captures.size());
-  EXPECT_LE(frames, done.captures.size() + 2) << "views captured again after the stops";
-  int kept = 0;
-  for (const CaptureRecord& capture : done.captures) {
-    kept += capture.kept;
-    EXPECT_FALSE(capture.phase.empty()) << capture.image_id;
-  }
-  EXPECT_GE(kept, 10);
-  for (const char* file :
-       {"calibration.yaml", "cameras.json", "colmap/images.txt", "model/ppr.bt", "model/points.ply",
-        "model/clusters.ply", "model/mesh.ply", "model/traits.csv", "report.json", "report.html"}) {
-    EXPECT_TRUE(fs::exists(scan_dir / file)) << file;
-  }
-  EXPECT_GT(fs::file_size(scan_dir / "model/mesh.ply"), 1000u);
   // The phases were timed through to the report.
   std::vector<std::string> phases;
   for (const PhaseTiming& phase : done.phases) phases.push_back(phase.state);
   EXPECT_NE(std::find(phases.begin(), phases.end(), "ACTIVE_VISION"), phases.end());
   EXPECT_EQ(phases.back(), "REPORT");
+  EXPECT_TRUE(cell.Exited().empty()) << cell.LogTails();
+}
+
+// A driver (or the simulator) that crashes during a scan is started again, as `avc up` does; the
+// scan goes on or stops with a fault, and resuming it finishes the scan with every image once.
+TEST(ScanMultiproc, DevicesKilledDuringTheScanAreRestartedAndTheScanFinishes) {
+  testing::TempDir dir("avc-scan-kill");
+  const fs::path scan_dir = dir.path() / "plant";
+  const fs::path calibration = dir.path() / "calibration.yaml";
+  WriteNominalCalibration(calibration);
+  const bus::BusOptions bus_options = bus::ResolveBusOptions({}, "scan-kill-test");
+  bench::CellProcesses cell(TestCell(bus_options, dir.path()));
+  const fs::path log = dir.path() / "scan.log";
+  // Which process dies after how many recorded captures.
+  const std::vector<std::pair<size_t, std::string>> kills = {
+      {3, "avc-robot"}, {6, "avc-camera"}, {9, "avc-turntable"}};
+  size_t next_kill = 0;
+  int runs = 0;
+  std::optional<int> status;
+  while (runs < 6) {
+    std::vector<std::string> args = {scan_dir.string()};
+    args.insert(args.begin(), runs == 0 ? "--calibration" : "--resume");
+    if (runs == 0) args.insert(args.begin() + 1, calibration.string());
+    ScanProcess scan(args, bus_options, cell.key().file, log);
+    ++runs;
+    while (next_kill < kills.size() &&
+           WaitForCaptures(scan_dir, kills[next_kill].first, scan.child())) {
+      cell.KillAndRestart(kills[next_kill].second);
+      ++next_kill;
+    }
+    status = scan.child().WaitFor(milliseconds(240000));
+    ASSERT_TRUE(status.has_value()) << "scan did not finish\n" << testing::ReadFile(log);
+    ASSERT_TRUE(WIFEXITED(*status)) << launch::DescribeWaitStatus(*status);
+    if (WEXITSTATUS(*status) == 0) break;
+    // Anything but a fault (exit 3) is a bug; a fault names what failed and is resumable.
+    ASSERT_EQ(WEXITSTATUS(*status), 3) << testing::ReadFile(log) << cell.LogTails();
+  }
+  ASSERT_TRUE(status && WIFEXITED(*status) && WEXITSTATUS(*status) == 0)
+      << "not finished after " << runs << " runs\n"
+      << testing::ReadFile(log) << cell.LogTails();
+  EXPECT_EQ(next_kill, kills.size()) << "the scan finished before every kill";
+  std::printf("[ measured ] %d scan runs for %zu device crashes\n", runs, kills.size());
+  ExpectFinishedScan(scan_dir, cell, kills.size());
   EXPECT_TRUE(cell.Exited().empty()) << cell.LogTails();
 }
 
