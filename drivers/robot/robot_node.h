@@ -58,7 +58,9 @@ struct RobotNodeConfig {
   double state_rate_hz = 25;  // robot_state_t publication rate (controller time)
   // The service whose heartbeat guards motions ("" disables the watchdog).
   std::string watchdog_service = "avc-orchestrator";
-  Milliseconds watchdog_timeout{500};
+  // Silence after which a watched motion is stopped: with the stop itself taking about 25 ms,
+  // the arm is stopped within 500 ms of losing the orchestrator (which beats at 10 Hz).
+  Milliseconds watchdog_timeout{400};
   // Who may move the arm: every command but STOP and POWER_OFF must be signed with the cell's
   // key (core/auth) unless unsigned commands are allowed explicitly.
   auth::VerifierOptions auth;
