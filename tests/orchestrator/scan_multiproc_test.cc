@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "bench/devices/cell_processes.h"
+#include "core/auth/command_key.h"
 #include "core/bus/bus.h"
 #include "core/bus/bus_options.h"
 #include "core/bus/channels.h"
@@ -206,6 +207,38 @@ TEST(ScanMultiproc, PausedKilledAndResumedScanFinishesWithEveryImageOnce) {
   EXPECT_NE(std::find(phases.begin(), phases.end(), "ACTIVE_VISION"), phases.end());
   EXPECT_EQ(phases.back(), "REPORT");
   EXPECT_TRUE(cell.Exited().empty()) << cell.LogTails();
+}
+
+// No cell answering: the scan stops with a fault that names every missing service and says how
+// to resume, and a resume tries again.
+TEST(ScanMultiproc, DevicesThatNeverAnswerFaultTheScanWithTheirNames) {
+  testing::TempDir dir("avc-scan-nocell");
+  const fs::path scan_dir = dir.path() / "plant";
+  const fs::path calibration = dir.path() / "calibration.yaml";
+  WriteNominalCalibration(calibration);
+  const fs::path log = dir.path() / "scan.log";
+  ScanProcess scan(
+      {"--calibration", calibration.string(), scan_dir.string(), "--ready-timeout", "1"},
+      bus::ResolveBusOptions({}, "scan-nocell-test"),
+      auth::GenerateCommandKey(dir / "cell.key").file, log);
+  const auto status = scan.child().WaitFor(milliseconds(30000));
+  ASSERT_TRUE(status.has_value()) << testing::ReadFile(log);
+  EXPECT_TRUE(WIFEXITED(*status) && WEXITSTATUS(*status) == 3)
+      << launch::DescribeWaitStatus(*status) << "\n"
+      << testing::ReadFile(log);
+  const std::string said = testing::ReadFile(log);
+  for (const char* service : {"avc-robot: never heard", "avc-turntable: never heard",
+                              "avc-camera: never heard", "avc scan --resume"}) {
+    EXPECT_NE(said.find(service), std::string::npos) << service << "\n" << said;
+  }
+  // Nothing was started: the record stays IDLE and a resume tries the devices again.
+  EXPECT_EQ(LoadScanRecord(scan_dir).state, ScanState::kIdle);
+  ScanProcess again({"--resume", scan_dir.string(), "--ready-timeout", "1"},
+                    bus::ResolveBusOptions({}, "scan-nocell-test"), dir / "cell.key", log);
+  const auto again_status = again.child().WaitFor(milliseconds(30000));
+  ASSERT_TRUE(again_status.has_value());
+  EXPECT_TRUE(WIFEXITED(*again_status) && WEXITSTATUS(*again_status) == 3)
+      << testing::ReadFile(log);
 }
 
 // A driver (or the simulator) that crashes during a scan is started again, as `avc up` does; the
