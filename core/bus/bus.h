@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "core/bus/bus_options.h"
+#include "core/bus/decode.h"
 #include "core/bus/event_loop.h"
 #include "core/util/clock.h"
 
@@ -110,7 +111,7 @@ class Bus {
         options.link, std::regex_replace(channel, std::regex(R"([.^$|()\[\]{}*+?\\])"), R"(\$&)"),
         [this, handler = std::move(handler)](const uint8_t* data, size_t size, const RxInfo& info) {
           T msg;
-          if (msg.decode(data, 0, static_cast<int>(size)) < 0) {
+          if (!DecodeMessage(data, size, &msg)) {
             Reject(info, "does not decode as " + std::string(T::getTypeName()));
             return;
           }

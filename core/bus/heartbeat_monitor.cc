@@ -1,6 +1,7 @@
 #include "core/bus/heartbeat_monitor.h"
 
 #include "core/bus/channels.h"
+#include "core/bus/decode.h"
 
 namespace avc::bus {
 
@@ -11,7 +12,7 @@ HeartbeatMonitor::HeartbeatMonitor(Bus& bus, bool all_cells) : bus_(bus) {
       Link::kControl, cell + "/" + std::string(channels::kHeartbeat),
       [this](const uint8_t* data, size_t size, const RxInfo& info) {
         ServiceSighting sighting;
-        if (sighting.beat.decode(data, 0, static_cast<int>(size)) < 0) {
+        if (!DecodeMessage(data, size, &sighting.beat)) {
           bus_.Reject(info, "does not decode as avc.heartbeat_t");
           return;
         }

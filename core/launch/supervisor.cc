@@ -288,7 +288,7 @@ void Supervisor::BeginShutdown(const std::string& reason) {
     log::Info("stopping {} (pid {}): SIGTERM, SIGKILL after {}", process.spec.name,
               process.child->pid(), Seconds(process.spec.stop_timeout));
     process.child->Signal(SIGTERM);
-    process.kill_timer = loop_.AddTimer(process.spec.stop_timeout, [this, &process] {
+    process.kill_timer = loop_.AddTimer(process.spec.stop_timeout, [&process] {
       process.kill_timer = 0;
       if (!process.child) return;
       log::Warn("{} (pid {}) did not stop within {}: SIGKILL", process.spec.name,

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "core/bus/decode.h"
 #include "core/products/point_cloud_ply.h"
 #include "core/util/log.h"
 
@@ -19,7 +20,7 @@ namespace {
 template <class T>
 T DecodeAs(const Product& product) {
   T msg;
-  if (msg.decode(product.payload.data(), 0, static_cast<int>(product.payload.size())) < 0) {
+  if (!bus::DecodeMessage(product.payload.data(), product.payload.size(), &msg)) {
     throw std::invalid_argument(
         fmt::format("product '{}' does not decode as {}", product.name, product.content_type));
   }

@@ -3,6 +3,7 @@
 #include <avc/product_ack_t.hpp>
 
 #include "core/bus/channels.h"
+#include "core/bus/decode.h"
 #include "core/util/log.h"
 
 namespace avc::products {
@@ -14,7 +15,7 @@ ProductReceiver::ProductReceiver(bus::Bus& bus, std::string receiver_name,
       bus::Link::kBulk, bus_.cell() + "/" + channel_pattern,
       [this](const uint8_t* data, size_t size, const bus::RxInfo& info) {
         avc::product_chunk_t chunk{};
-        if (chunk.decode(data, 0, static_cast<int>(size)) < 0) {
+        if (!bus::DecodeMessage(data, size, &chunk)) {
           ++stats_.invalid;
           bus_.Reject(info, "does not decode as product_chunk_t");
           return;

@@ -11,6 +11,7 @@
 #include <cstring>
 
 #include "core/bus/channels.h"
+#include "core/bus/decode.h"
 #include "core/util/host.h"
 #include "core/util/log.h"
 #include "core/util/version.h"
@@ -128,7 +129,7 @@ void Recorder::Write(const std::string& channel, int64_t utime, const uint8_t* d
     }
     // Its product must not be acknowledged (the receiver's handler runs after this one).
     avc::product_chunk_t chunk{};
-    if (product_chunk && chunk.decode(data, 0, static_cast<int>(size)) >= 0) {
+    if (product_chunk && bus::DecodeMessage(data, size, &chunk)) {
       unlogged_products_.insert(chunk.product_id);
     }
     return;

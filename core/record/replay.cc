@@ -10,6 +10,7 @@
 #include "core/bus/bus.h"
 #include "core/bus/bus_options.h"
 #include "core/bus/channels.h"
+#include "core/bus/decode.h"
 #include "core/record/log_reader.h"
 #include "core/util/clock.h"
 
@@ -59,7 +60,8 @@ std::string CellOfLog(const std::filesystem::path& log) {
       if (!IsRunInfoChannel(event->channel)) continue;
       const std::string prefix = event->channel.substr(0, event->channel.find('/'));
       avc::run_info_t info;
-      if (info.decode(event->data, 0, event->datalen) >= 0 &&
+      if (event->datalen >= 0 &&
+          bus::DecodeMessage(event->data, static_cast<size_t>(event->datalen), &info) &&
           bus::IsValidCellId(info.header.cell)) {
         return info.header.cell;
       }

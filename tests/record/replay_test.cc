@@ -483,6 +483,21 @@ TEST_F(ReplayTest, AFileThatIsNotAnLcmLogIsAnErrorNamingIt) {
   }
 }
 
+// A RUN_INFO whose header.source claims a length of 0: lcm-gen's decode throws std::length_error
+// on it instead of failing (found by fuzz/lcm_log_fuzzer). The event is taken as undecodable and
+// the cell comes from its channel, as for any other malformed RUN_INFO.
+TEST_F(ReplayTest, RunInfoWithAZeroStringLengthIsUndecodableNotAnException) {
+  const fs::path path = dir_ / "bad-run-info.lcmlog";
+  {
+    LogBuilder log(path);
+    // Fingerprint, utime, seq, then source's length 0.
+    log.Add("cell7/RUN_INFO", Encode(avc::run_info_t{}).substr(0, 8) + std::string(24, '\0'));
+  }
+  std::string cell;
+  EXPECT_NO_THROW(cell = CellOfLog(path));
+  EXPECT_EQ(cell, "cell7");
+}
+
 TEST_F(ReplayTest, UnknownNodeIsAnErrorListingTheKnownOnes) {
   ReplayOptions options;
   options.log = log_.path;

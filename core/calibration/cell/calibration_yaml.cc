@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
+#include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -50,6 +52,16 @@ class Reader {
     } catch (const YAML::Exception&) {
       Fail(node, fmt::format("'{}' is not a number", key));
     }
+  }
+
+  // A whole number that fits an int (a cast of 1e20 or NaN to int is undefined behaviour).
+  int Integer(const YAML::Node& parent, const char* key) const {
+    const double value = Number(parent, key);
+    if (!(value >= std::numeric_limits<int>::min() && value <= std::numeric_limits<int>::max()) ||
+        value != std::floor(value)) {
+      Fail(Child(parent, key), fmt::format("'{}' must be a whole number, not {}", key, value));
+    }
+    return static_cast<int>(value);
   }
 
   std::vector<double> Numbers(const YAML::Node& parent, const char* key, size_t count) const {
@@ -161,8 +173,8 @@ CellCalibration CalibrationFromYaml(const std::string& text, const std::string& 
   if (doc["note"]) calibration.note = doc["note"].as<std::string>("");
   const YAML::Node camera = read.Child(doc, "camera");
   camera::Intrinsics& k = calibration.intrinsics;
-  k.width = static_cast<int>(read.Number(camera, "width"));
-  k.height = static_cast<int>(read.Number(camera, "height"));
+  k.width = read.Integer(camera, "width");
+  k.height = read.Integer(camera, "height");
   k.fx = read.Number(camera, "fx");
   k.fy = read.Number(camera, "fy");
   k.cx = read.Number(camera, "cx");
@@ -184,7 +196,7 @@ CellCalibration CalibrationFromYaml(const std::string& text, const std::string& 
     r.hand_eye_rotation_deg = read.Number(residuals, "hand_eye_rotation_deg");
     r.hand_eye_translation_mm = read.Number(residuals, "hand_eye_translation_mm");
     r.turntable_centre_rms_mm = read.Number(residuals, "turntable_centre_rms_mm");
-    r.turntable_angles = static_cast<int>(read.Number(residuals, "turntable_angles"));
+    r.turntable_angles = read.Integer(residuals, "turntable_angles");
     for (const YAML::Node& view : read.Child(residuals, "views")) {
       r.view_names.push_back(read.Child(view, "name").as<std::string>());
       r.view_rms_px.push_back(read.Number(view, "rms_px"));

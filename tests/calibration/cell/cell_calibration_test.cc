@@ -115,5 +115,25 @@ TEST(CalibrationYaml, NamesTheLineAndFieldOfEveryProblem) {
   EXPECT_THROW(LoadCalibration("/nonexistent/calibration.yaml"), std::runtime_error);
 }
 
+// Found by fuzz/calibration_yaml_fuzzer: a width of 8.2e9 was cast to int (undefined behaviour).
+TEST(CalibrationYaml, RefusesSizesThatAreNotWholeNumbersOfPixels) {
+  const std::string good = CalibrationToYaml(FromTruth(sim::NominalCell()));
+  const size_t at = good.find("width: ");
+  ASSERT_NE(at, std::string::npos);
+  const size_t end = good.find('\n', at);
+  for (const std::string width : {"8.2e9", "-1e300", "640.5", ".nan"}) {
+    std::string text = good;
+    text.replace(at, end - at, "width: " + width);
+    try {
+      CalibrationFromYaml(text, "cal.yaml");
+      ADD_FAILURE() << "width " << width << " was accepted";
+    } catch (const std::runtime_error& error) {
+      EXPECT_EQ(std::string(error.what()).rfind("cal.yaml:", 0), 0u) << error.what();
+      EXPECT_NE(std::string(error.what()).find("'width' must be a whole number"), std::string::npos)
+          << error.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace avc::calibration
