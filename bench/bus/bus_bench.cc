@@ -1,26 +1,18 @@
 #include "bench/bus/bus_bench.h"
 
 #include <fmt/format.h>
-#include <signal.h>
+#include <unistd.h>
 
 #include <CLI/CLI.hpp>
-#include <algorithm>
-#include <avc/heartbeat_t.hpp>
-#include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <map>
 #include <nlohmann/json.hpp>
-#include <optional>
 
-#include "bench/bus/bus_bench_phase.h"
+#include "bench/bus/bus_bench_loss.h"
 #include "bench/bus/bus_bench_receiver.h"
+#include "bench/bus/bus_bench_run.h"
 #include "bench/registry.h"
-#include "core/bus/channels.h"
-#include "core/bus/heartbeat.h"
-#include "core/launch/child_process.h"
-#include "core/launch/find_program.h"
+#include "core/bus/bus_options.h"
 #include "core/util/log.h"
 
 namespace avc::bench {
@@ -38,139 +30,52 @@ struct BusBenchArgs {
   int port = 7687;
   std::string cell = "bench";
   bool json = false;
+  // Given --loss: the loss mode instead of the buffer comparison.
+  LossBenchOptions loss;
   // The receiving process.
   std::string role = "sender";
   BusBenchReceiverOptions receiver;
 };
 
-// One way of configuring the bulk link, measured end to end.
-struct BusConfig {
-  std::string name;
-  std::string description;
-  std::string bulk_url;
-  size_t max_message_bytes = 0;
-  bool baseline = false;  // runs the shorter comparison schedule
-};
+std::string BulkUrl(const BusBenchArgs& args) {
+  return fmt::format("udpm://239.255.76.67:{}?ttl=0", args.port + 1);
+}
+// The recommended bulk link (README "The bus").
+std::string RecommendedBulkUrl(const BusBenchArgs& args) {
+  return BulkUrl(args) + "&recv_buf_size=4194304";
+}
 
-struct ConfigResult {
+BusLink Link(const BusBenchArgs& args) {
+  return {fmt::format("udpm://239.255.76.67:{}?ttl=0", args.port), args.cell};
+}
+
+BusConfig BufferConfig(const BusBenchArgs& args, std::string name, std::string description,
+                       std::string bulk_url, size_t max_message_bytes, bool baseline) {
   BusConfig config;
-  std::vector<PhaseResult> phases;
-  std::map<std::string, int64_t> receiver_delivered;
-  int64_t receiver_duplicates = 0;
-  int64_t receiver_corrupt = 0;
-  std::string error;
-};
+  config.name = std::move(name);
+  config.description = std::move(description);
+  config.bulk_url = std::move(bulk_url);
+  config.max_message_bytes = max_message_bytes;
+  // The baselines run the shorter comparison schedule.
+  config.phases = baseline ? RateThenBurst(config.name, args.compare_duration_s, args.rate_hz,
+                                           args.compare_burst, args.size_bytes)
+                           : RateThenBurst(config.name, args.duration_s, args.rate_hz, args.burst,
+                                           args.size_bytes);
+  return config;
+}
 
 std::vector<BusConfig> Configs(const BusBenchArgs& args) {
-  const std::string bulk = fmt::format("udpm://239.255.76.67:{}?ttl=0", args.port + 1);
   return {
-      {"recommended", "bulk recv_buf_size=4194304, products up to 8 MB in one message",
-       bulk + "&recv_buf_size=4194304", bus::kDefaultMaxMessageBytes, false},
-      {"default-buffer", "kernel default receive buffer, products up to 8 MB in one message", bulk,
-       bus::kDefaultMaxMessageBytes, true},
-      {"default-buffer-64k", "kernel default receive buffer, products chunked at 64 kB", bulk,
-       64'000, true},
+      BufferConfig(args, "recommended",
+                   "bulk recv_buf_size=4194304, products up to 8 MB in one message",
+                   RecommendedBulkUrl(args), bus::kDefaultMaxMessageBytes, false),
+      BufferConfig(args, "default-buffer",
+                   "kernel default receive buffer, products up to 8 MB in one message",
+                   BulkUrl(args), bus::kDefaultMaxMessageBytes, true),
+      BufferConfig(args, "default-buffer-64k",
+                   "kernel default receive buffer, products chunked at 64 kB", BulkUrl(args),
+                   64'000, true),
   };
-}
-
-std::string ControlUrl(const BusBenchArgs& args) {
-  return fmt::format("udpm://239.255.76.67:{}?ttl=0", args.port);
-}
-
-bus::BusOptions SenderBusOptions(const BusBenchArgs& args, const BusConfig& config) {
-  bus::BusOptions options;
-  options.control_url = ControlUrl(args);
-  options.bulk_url = config.bulk_url;
-  options.cell = args.cell;
-  options.source = "avc-bench";
-  options.max_message_bytes = config.max_message_bytes;
-  return options;
-}
-
-// Waits until the receiver's heartbeat says READY, so no product is sent before it listens.
-bool WaitForReceiver(bus::Bus& bus, bus::EventLoop& loop, pid_t pid) {
-  bool ready = false;
-  const auto id = bus.Subscribe<avc::heartbeat_t>(
-      channels::kHeartbeat, [&](const avc::heartbeat_t& beat, const bus::RxInfo&) {
-        ready = ready || (beat.service == kBenchReceiverService && beat.pid == pid &&
-                          beat.state == avc::heartbeat_t::STATE_READY);
-      });
-  loop.RunUntil([&] { return ready; }, std::chrono::seconds(15));
-  bus.Unsubscribe(id);
-  return ready;
-}
-
-void ReadReceiverReport(const fs::path& path, ConfigResult& result) {
-  std::ifstream in(path);
-  nlohmann::json report = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
-  if (report.is_discarded() || !report.is_object()) {
-    result.error = "the receiver wrote no readable report (" + path.string() + ")";
-    return;
-  }
-  result.receiver_delivered = report.value("delivered", std::map<std::string, int64_t>{});
-  result.receiver_duplicates = report.value("duplicates", int64_t{0});
-  result.receiver_corrupt = report.value("corrupt", int64_t{0});
-}
-
-// Runs the receiver as a child process (`avc bench bus --role receiver`), both phases from
-// this process, then stops the receiver and reads what it counted.
-ConfigResult RunConfig(const BusBenchArgs& args, const BusConfig& config, const fs::path& work) {
-  ConfigResult result;
-  result.config = config;
-  const fs::path report = work / (config.name + ".json");
-  launch::SpawnSpec spawn;
-  spawn.argv = {(launch::SelfExecutableDir() / "avc").string(),
-                "bench",
-                "bus",
-                "--role",
-                "receiver",
-                "--report",
-                report.string(),
-                "--lcm-url",
-                ControlUrl(args),
-                "--bulk-url",
-                config.bulk_url,
-                "--cell",
-                args.cell};
-  spawn.log_file = (work / (config.name + "-receiver.log")).string();
-  launch::ChildProcess receiver = launch::ChildProcess::Spawn(spawn);
-
-  bus::Bus bus(SenderBusOptions(args, config));
-  bus::EventLoop loop;
-  bus.AttachTo(loop);
-  if (!WaitForReceiver(bus, loop, receiver.pid())) {
-    result.error = "the receiver did not report READY within 15 s; see " + spawn.log_file;
-    return result;
-  }
-  products::SenderOptions sender_options;
-  sender_options.required_receivers = {kBenchReceiverName};
-  const double duration = config.baseline ? args.compare_duration_s : args.duration_s;
-  const int burst = config.baseline ? args.compare_burst : args.burst;
-  const std::vector<PhaseSpec> phases = {
-      {fmt::format("{}/rate", config.name), static_cast<int>(std::lround(duration * args.rate_hz)),
-       args.rate_hz, args.size_bytes},
-      {fmt::format("{}/burst", config.name), burst, 0, args.size_bytes},
-  };
-  for (const PhaseSpec& phase : phases) {
-    log::Info("{}: {} products of {:.1f} MB {}", phase.name, phase.count,
-              static_cast<double>(phase.payload_bytes) / 1e6,
-              phase.rate_hz > 0 ? fmt::format("at {} Hz", phase.rate_hz) : "at full speed");
-    result.phases.push_back(RunPhase(bus, loop, phase, sender_options));
-  }
-  receiver.Signal(SIGTERM);
-  const std::optional<int> status = receiver.WaitFor(std::chrono::seconds(10));
-  if (!status || !WIFEXITED(*status) || WEXITSTATUS(*status) != 0) {
-    result.error = "the receiver did not stop cleanly (" +
-                   (status ? launch::DescribeWaitStatus(*status) : std::string("still running")) +
-                   "); see " + spawn.log_file;
-  }
-  ReadReceiverReport(report, result);
-  return result;
-}
-
-int64_t ReceiverDelivered(const ConfigResult& result, const std::string& phase) {
-  const auto it = result.receiver_delivered.find(phase);
-  return it == result.receiver_delivered.end() ? 0 : it->second;
 }
 
 void PrintTable(const std::vector<ConfigResult>& results) {
@@ -198,33 +103,7 @@ nlohmann::json ToJson(const BusBenchArgs& args, const std::vector<ConfigResult>&
   json["benchmark"] = "bus";
   json["payload_bytes"] = args.size_bytes;
   json["rate_hz"] = args.rate_hz;
-  for (const ConfigResult& result : results) {
-    nlohmann::json config;
-    config["name"] = result.config.name;
-    config["description"] = result.config.description;
-    config["bulk_url"] = result.config.bulk_url;
-    config["max_message_bytes"] = result.config.max_message_bytes;
-    config["receiver_duplicates"] = result.receiver_duplicates;
-    config["receiver_corrupt"] = result.receiver_corrupt;
-    config["error"] = result.error;
-    for (const PhaseResult& phase : result.phases) {
-      const int64_t delivered = ReceiverDelivered(result, phase.name);
-      config["phases"].push_back({{"name", phase.name},
-                                  {"sent", phase.sent},
-                                  {"acknowledged", phase.acknowledged},
-                                  {"delivered", delivered},
-                                  {"lost", phase.sent - delivered},
-                                  {"failed", phase.failed},
-                                  {"chunks_sent", phase.chunks_sent},
-                                  {"chunks_retransmitted", phase.chunks_retransmitted},
-                                  {"latency_ms_median", phase.latency_ms.median},
-                                  {"latency_ms_p99", phase.latency_ms.p99},
-                                  {"latency_ms_max", phase.latency_ms.max},
-                                  {"seconds", phase.seconds},
-                                  {"megabytes_per_second", phase.megabytes_per_second}});
-    }
-    json["configs"].push_back(config);
-  }
+  for (const ConfigResult& result : results) json["configs"].push_back(ToJson(result));
   return json;
 }
 
@@ -239,22 +118,37 @@ bool MeetsGoal(const std::vector<ConfigResult>& results) {
   return recommended.phases.front().latency_ms.median < 50.0;
 }
 
-int RunSender(const BusBenchArgs& args) {
-  const fs::path work = fs::temp_directory_path() / fmt::format("avc-bench-bus-{}", getpid());
-  fs::create_directories(work);
+int RunBufferComparison(const BusBenchArgs& args, const fs::path& work) {
   std::vector<ConfigResult> results;
   for (const BusConfig& config : Configs(args)) {
     log::Info("configuration {}: {}", config.name, config.description);
-    results.push_back(RunConfig(args, config, work));
+    results.push_back(RunConfig(Link(args), config, work));
   }
   PrintTable(results);
   const bool goal = MeetsGoal(results);
   std::cout << fmt::format("goal (recommended: 0 lost, median latency < 50 ms at {} Hz): {}\n",
                            args.rate_hz, goal ? "met" : "NOT met");
   if (args.json) std::cout << ToJson(args, results).dump() << "\n";
+  return goal ? 0 : 1;
+}
+
+int RunSender(BusBenchArgs args) {
+  const fs::path work = fs::temp_directory_path() / fmt::format("avc-bench-bus-{}", getpid());
+  fs::create_directories(work);
+  int exit_code = 0;
+  if (args.loss.rates.empty()) {
+    exit_code = RunBufferComparison(args, work);
+  } else {
+    args.loss.rate_hz = args.rate_hz;
+    args.loss.size_bytes = args.size_bytes;
+    args.loss.bulk_url = RecommendedBulkUrl(args);
+    args.loss.link = Link(args);
+    args.loss.json = args.json;
+    exit_code = RunLossBenchmark(args.loss, work);
+  }
   std::error_code ignored;
   fs::remove_all(work, ignored);
-  return goal ? 0 : 1;
+  return exit_code;
 }
 
 }  // namespace
@@ -263,7 +157,8 @@ int RunBusBenchmark(const std::vector<std::string>& arguments) {
   BusBenchArgs args;
   CLI::App app{
       "avc bench bus: 5 MB products between two processes over multicast LCM, steady rate and\n"
-      "burst, with the recommended bulk receive buffer and two kernel-default baselines.",
+      "burst, with the recommended bulk receive buffer and two kernel-default baselines; with\n"
+      "--loss, chunked products under injected message loss instead.",
       "avc bench bus"};
   app.add_option("--duration", args.duration_s, "seconds of the steady phase (recommended)")
       ->capture_default_str()
@@ -288,6 +183,26 @@ int RunBusBenchmark(const std::vector<std::string>& arguments) {
                  "control UDP port; bulk uses the next (own ports, not a cell's)")
       ->capture_default_str()
       ->check(CLI::Range(1024, 65534));
+  app.add_option("--loss", args.loss.rates,
+                 "loss mode: fractions of received chunks and acknowledgements to drop in both "
+                 "processes, each against a loss-free run (--loss alone: 0.01,0.05,0.2)")
+      ->delimiter(',')
+      ->expected(0, CLI::detail::expected_max_vector_size)
+      ->default_str("0.01,0.05,0.2")
+      ->check(CLI::Range(0.0, 0.9));
+  app.add_option("--loss-duration", args.loss.duration_s,
+                 "loss mode: seconds of the steady phase per loss rate")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  app.add_option("--loss-burst", args.loss.burst, "loss mode: burst size per loss rate")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100'000));
+  app.add_option("--chunk", args.loss.chunk_bytes,
+                 "loss mode: bus cap, so chunk size (64000: one chunk per UDP datagram)")
+      ->capture_default_str()
+      ->check(CLI::Range(size_t{4'096}, bus::kDefaultMaxMessageBytes));
+  app.add_option("--seed", args.loss.seed, "loss mode: seed of the injected loss")
+      ->capture_default_str();
   app.add_flag("--json", args.json, "print the results as one JSON line at the end");
   app.add_option("--role", args.role, "internal: 'receiver' runs the receiving process")
       ->check(CLI::IsMember({"sender", "receiver"}))
@@ -297,6 +212,8 @@ int RunBusBenchmark(const std::vector<std::string>& arguments) {
   app.add_option("--lcm-url", args.receiver.bus.lcm_url, "internal")->group("");
   app.add_option("--bulk-url", args.receiver.bus.bulk_url, "internal")->group("");
   app.add_option("--cell", args.receiver.bus.cell, "internal")->group("");
+  app.add_option("--receive-loss", args.receiver.loss, "internal")->group("");
+  app.add_option("--loss-seed", args.receiver.loss_seed, "internal")->group("");
   if (const auto exit_code = ParseBenchmarkArguments(app, arguments)) return *exit_code;
   if (args.role == "receiver") return RunBusBenchReceiver(args.receiver);
   return RunSender(args);

@@ -1,5 +1,6 @@
 #include "bench/bus/bus_bench_phase.h"
 
+#include <algorithm>
 #include <cstring>
 #include <random>
 
@@ -39,6 +40,7 @@ PhaseResult RunPhase(bus::Bus& bus, bus::EventLoop& loop, const PhaseSpec& spec,
   int finished = 0;
   auto on_done = [&](const products::SendResult& send) {
     ++finished;
+    result.max_attempts = std::max(result.max_attempts, send.attempts);
     if (send.ok) {
       ++result.acknowledged;
       latencies_ms.push_back(static_cast<double>(send.latency_us) / 1000.0);

@@ -26,6 +26,8 @@ struct PhaseResult {
   int sent = 0;
   int acknowledged = 0;
   int failed = 0;
+  int max_attempts =
+      0;  // most transmissions any product needed (SenderOptions::max_attempts caps it)
   int64_t chunks_sent = 0;
   int64_t chunks_retransmitted = 0;
   Summary latency_ms;               // Send() to acknowledgement, acknowledged products only
