@@ -26,7 +26,8 @@ if(AVC_JAVA_ENABLED)
 endif()
 
 # avc_lcm_generate(TARGET <name> PACKAGE_DIR <dir with <package>/*.lcm>)
-# Generates C++ headers into the build tree (included as SYSTEM: they do not pass our warnings)
+# Generates C++ headers into the build tree (included as SYSTEM: they do not pass our warnings),
+# their array decoding bounded by the bytes received (AvcLcmBoundArrays.cmake)
 # and, with a JDK, ${PROJECT_BINARY_DIR}/avc-lcmtypes.jar.
 function(avc_lcm_generate)
   cmake_parse_arguments(ARG "" "TARGET;PACKAGE_DIR" "" ${ARGN})
@@ -48,7 +49,8 @@ function(avc_lcm_generate)
     endif()
     add_custom_command(OUTPUT ${outputs}
       COMMAND ${AVC_LCM_GEN} --cpp --cpp-std=c++11 --cpp-hpath ${gen}/cpp ${java_args} ${f}
-      DEPENDS ${f}
+      COMMAND ${CMAKE_COMMAND} -DFILE=${hpp} -P ${PROJECT_SOURCE_DIR}/cmake/AvcLcmBoundArrays.cmake
+      DEPENDS ${f} ${PROJECT_SOURCE_DIR}/cmake/AvcLcmBoundArrays.cmake
       COMMENT "lcm-gen ${pkg}/${type}.lcm"
       VERBATIM)
     list(APPEND hpps ${hpp})
