@@ -1,8 +1,7 @@
-// Received bytes that claim more array elements than they carry are refused before anything is
-// allocated (cmake/AvcLcmBoundArrays.cmake over lcm-gen's decode), and bus::DecodeMessage turns
-// the generated decode's exceptions into refusals: a few hostile bytes cost a receiver nothing.
-
-#include "core/bus/decode.h"
+// Received bytes that claim more array elements than they carry, or a string length below one,
+// are refused before anything is allocated or computed from them (cmake/AvcLcmBoundArrays.cmake
+// over lcm-gen's decode), and bus::DecodeMessage turns the generated decode's exceptions into
+// refusals: a few hostile bytes cost a receiver nothing.
 
 #include <gtest/gtest.h>
 #include <sys/resource.h>
@@ -10,6 +9,8 @@
 #include <avc/product_chunk_t.hpp>
 #include <cstdint>
 #include <vector>
+
+#include "core/bus/decode.h"
 
 namespace avc::bus {
 namespace {
@@ -60,6 +61,17 @@ TEST(MessageDecode, AHugeArrayCountIsRefusedWithoutAllocatingIt) {
     setrlimit(RLIMIT_AS, &before);
     EXPECT_LT(result, 0) << "claimed " << claimed;
     EXPECT_FALSE(DecodeMessage(bytes.data(), bytes.size(), &decoded));
+  }
+}
+
+TEST(MessageDecode, AStringLengthOfZeroOrLessIsRefused) {
+  std::vector<uint8_t> bytes = Encode(Chunk());
+  // After the 8-byte type hash, header_t's utime and seq (8 bytes each), then source's length.
+  const size_t length_at = 8 + 8 + 8;
+  for (const uint32_t length : {0x80000000u, 0u, 0xffffffffu}) {
+    for (int i = 0; i < 4; ++i) bytes[length_at + i] = static_cast<uint8_t>(length >> (24 - 8 * i));
+    avc::product_chunk_t decoded;
+    EXPECT_LT(decoded.decode(bytes.data(), 0, static_cast<int>(bytes.size())), 0) << length;
   }
 }
 
