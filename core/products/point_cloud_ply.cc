@@ -63,7 +63,8 @@ std::string PointCloudToPly(const avc::point_cloud_t& cloud) {
   for (const avc::point_field_t& field : fields) {
     const PlyType type = ToPlyType(field.datatype);
     if (field.offset < position || field.count < 1 ||
-        field.offset + field.count * type.bytes > cloud.point_step) {
+        // In 64 bits: a hostile count times the type's size overflows int (fuzz/lcm_messages).
+        int64_t{field.offset} + int64_t{field.count} * type.bytes > cloud.point_step) {
       throw std::invalid_argument(
           fmt::format("point cloud '{}': field '{}' overlaps another or "
                       "leaves the {}-byte record",

@@ -61,6 +61,9 @@ TEST(PointCloudPly, InconsistentCloudsAreRefused) {
   cloud = XyzRgbCloud();
   cloud.fields[0].datatype = 42;
   EXPECT_THROW(PointCloudToPly(cloud), std::invalid_argument);
+  cloud = XyzRgbCloud();
+  cloud.fields[2].count = 754974721;  // count x 4 bytes overflows int (found by fuzzing)
+  EXPECT_THROW(PointCloudToPly(cloud), std::invalid_argument);
 }
 
 }  // namespace
