@@ -92,6 +92,19 @@ std::string OctreeBytes(bool pruned) {
   return bytes.str();
 }
 
+// An RGB8 raw image_t of one grey level.
+avc::image_t RawImage(int width, int height, uint8_t grey) {
+  avc::image_t image{};
+  image.image_id = "view_0000";
+  image.width = width;
+  image.height = height;
+  image.pixel_format = avc::image_t::PIXEL_RGB8;
+  image.encoding = avc::image_t::ENCODING_RAW;
+  image.data.assign(static_cast<size_t>(width) * height * 3, grey);
+  image.size = static_cast<int32_t>(image.data.size());
+  return image;
+}
+
 std::string ReadBack(const fs::path& path) { return ReadFile(path); }
 
 void MeshSeeds() {
@@ -162,15 +175,7 @@ void MessageSeeds() {
   map.data_size = static_cast<int32_t>(map.data.size());
   Seed("lcm_messages", "voxel_map_t", Encode(map));
 
-  avc::image_t image{};
-  image.image_id = "view_0000";
-  image.width = 4;
-  image.height = 3;
-  image.pixel_format = avc::image_t::PIXEL_RGB8;
-  image.encoding = avc::image_t::ENCODING_RAW;
-  image.data.assign(4 * 3 * 3, 128);
-  image.size = static_cast<int32_t>(image.data.size());
-  Seed("lcm_messages", "image_t_raw", Encode(image));
+  Seed("lcm_messages", "image_t_raw", Encode(RawImage(4, 3, 128)));
 
   Seed("voxel_map", "one_voxel.bt", OctreeBytes(/*pruned=*/false));
   Seed("voxel_map", "pruned.bt", tree);
@@ -178,14 +183,7 @@ void MessageSeeds() {
 
 void ChunkSeeds() {
   // A raw 32x24 image: three chunks of the smallest payload the chunker allows (1025 bytes).
-  avc::image_t image{};
-  image.image_id = "view_0000";
-  image.width = 32;
-  image.height = 24;
-  image.pixel_format = avc::image_t::PIXEL_RGB8;
-  image.encoding = avc::image_t::ENCODING_RAW;
-  image.data.assign(32 * 24 * 3, 77);
-  image.size = static_cast<int32_t>(image.data.size());
+  const avc::image_t image = RawImage(32, 24, 77);
   products::Product product;
   product.product_id = "p-1";
   product.name = "images/view_0000";
