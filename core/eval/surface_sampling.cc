@@ -7,6 +7,8 @@
 #include <random>
 #include <stdexcept>
 
+#include "core/util/keyed_random.h"
+
 namespace avc::eval {
 namespace {
 
@@ -15,12 +17,7 @@ double UnitDouble(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11
 
 }  // namespace
 
-uint64_t DeriveSeed(uint64_t seed, uint64_t stream) {
-  uint64_t z = seed + 0x9e3779b97f4a7c15ULL * (stream + 1);
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
+uint64_t DeriveSeed(uint64_t seed, uint64_t stream) { return util::MixSeed(seed, stream); }
 
 SurfaceSamples SampleSurface(const geometry::Mesh& mesh, double samples_per_m2, uint64_t seed,
                              size_t max_samples) {

@@ -10,6 +10,7 @@
 #include "bench/calibration/hand_eye/error_statistics.h"
 #include "bench/calibration/hand_eye/opencv_robot_world.h"
 #include "core/calibration/hand_eye/robot_world_hand_eye.h"
+#include "core/util/keyed_random.h"
 
 namespace avc::bench {
 namespace {
@@ -59,12 +60,9 @@ Errors Compare(const Eigen::Isometry3d& T_board_base, const Eigen::Isometry3d& T
   return {he_rotation, he_translation, rw_rotation, rw_translation};
 }
 
-// SplitMix64: well-separated per-trial seeds from one case seed.
+// Well-separated per-trial seeds from one case seed.
 uint64_t TrialSeed(uint64_t seed, int trial) {
-  uint64_t z = seed + 0x9E3779B97F4A7C15ULL * static_cast<uint64_t>(trial + 1);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-  return z ^ (z >> 31);
+  return util::MixSeed(seed, static_cast<uint64_t>(trial));
 }
 
 TrialOutcome RunTrial(const HandEyeTrialOptions& options, int trial) {

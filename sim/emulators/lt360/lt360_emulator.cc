@@ -11,8 +11,9 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
-#include <numbers>
 #include <stdexcept>
+
+#include "core/util/keyed_random.h"
 
 namespace avc::sim {
 namespace {
@@ -73,8 +74,7 @@ Lt360Emulator::Lt360Emulator(Lt360EmulatorOptions options, std::shared_ptr<Emula
     : options_(std::move(options)),
       clock_(clock ? std::move(clock) : std::make_shared<RealTimeEmulatorClock>()),
       position_deg_(options_.start_deg),
-      speed_deg_s_(options_.speed_deg_s),
-      rng_(options_.seed) {
+      speed_deg_s_(options_.speed_deg_s) {
   const std::string problem = options_.Validate();
   if (!problem.empty()) throw std::invalid_argument(problem);
   master_fd_ = ::posix_openpt(O_RDWR | O_NOCTTY | O_CLOEXEC);
@@ -181,13 +181,6 @@ int64_t Lt360Emulator::moves_started() const {
   return moves_started_;
 }
 
-double Lt360Emulator::Gaussian() {
-  // Box-Muller on our own mapping of engine bits: the same numbers with every standard library.
-  const double u1 = (static_cast<double>(rng_() >> 11) + 1) * 0x1.0p-53;  // (0, 1]
-  const double u2 = static_cast<double>(rng_() >> 11) * 0x1.0p-53;
-  return std::sqrt(-2 * std::log(u1)) * std::cos(2 * std::numbers::pi * u2);
-}
-
 void Lt360Emulator::Advance(double now_s) {
   if (!move_ || stalled_) return;
   const double travel = move_->to_deg - move_->from_deg;
@@ -203,7 +196,10 @@ void Lt360Emulator::Advance(double now_s) {
 
 void Lt360Emulator::StartMove(double delta_deg, double now_s) {
   ++moves_started_;
-  move_noise_deg_ = options_.sigma_deg * Gaussian();
+  // The error belongs to the target position, not to the move's place in the sequence: a goto
+  // sent again after a restart lands on the same true angle.
+  const auto target_tenths = static_cast<uint64_t>(QuantiseTenths(position_deg_ + delta_deg));
+  move_noise_deg_ = options_.sigma_deg * util::GaussianFor(options_.seed, target_tenths);
   if (delta_deg == 0) {
     move_.reset();
     return;

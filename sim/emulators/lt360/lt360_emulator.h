@@ -12,7 +12,6 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
-#include <random>
 #include <string>
 #include <thread>
 
@@ -26,7 +25,8 @@ struct Lt360EmulatorOptions {
   double speed_deg_s = 30;  // until a speed command changes it
   double accel_deg_s2 = 0;  // 0 = full speed at once; stop is always immediate
   double start_deg = 0;
-  // True angle = reported * (1 + scale_error) + offset_deg + N(0, sigma_deg) drawn per move.
+  // True angle = reported * (1 + scale_error) + offset_deg + e, with e ~ N(0, sigma_deg) a
+  // repeatable error of each target position (keyed by seed and target tenth).
   double offset_deg = 0;
   double scale_error = 0;
   double sigma_deg = 0;
@@ -85,7 +85,6 @@ class Lt360Emulator {
   std::string Handle(const std::string& line, double now_s);  // under mutex_
   void Advance(double now_s);                                 // under mutex_
   void StartMove(double delta_deg, double now_s);             // under mutex_
-  double Gaussian();                                          // under mutex_
   void Reply(std::string reply);                              // under mutex_
 
   Lt360EmulatorOptions options_;
@@ -105,7 +104,6 @@ class Lt360Emulator {
   int fault_replies_ = 0;
   int64_t commands_served_ = 0;
   int64_t moves_started_ = 0;
-  std::mt19937_64 rng_;
   std::thread thread_;
 };
 

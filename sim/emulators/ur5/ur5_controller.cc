@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "core/kinematics/forward_kinematics.h"
+#include "core/util/keyed_random.h"
 #include "drivers/robot/motion_monitor.h"
 
 namespace avc::sim::ur5 {
@@ -51,7 +52,6 @@ robot::primary::KinematicsInfo KinematicsOf(const kinematics::DhParameters& dh) 
 Ur5Controller::Ur5Controller(const Ur5EmulatorOptions& options, double start_time)
     : options_(options),
       arm_(options.cell.dh, options.initial_q),
-      rng_(options.seed),
       dt_(1.0 / options.control_frequency),
       time_(start_time),
       robot_mode_(options.powered ? RobotMode::kRunning : RobotMode::kPowerOff),
@@ -179,14 +179,13 @@ void Ur5Controller::Tick(double time) {
   SampleState();
 }
 
-double Ur5Controller::Noise() {
-  // Own mapping from 53 random bits: identical across standard libraries.
-  const double unit = static_cast<double>(rng_() >> 11) * 0x1.0p-53;
-  return (2 * unit - 1) * options_.encoder_noise_rad;
+double Ur5Controller::EncoderError(int joint, double q) const {
+  const uint64_t joint_seed = util::MixSeed(options_.seed, static_cast<uint64_t>(joint));
+  return util::SignedUnitFor(joint_seed, util::KeyOf(q)) * options_.encoder_noise_rad;
 }
 
 void Ur5Controller::SampleState() {
-  for (int i = 0; i < 6; ++i) reported_q_[i] = arm_.q()[i] + Noise();
+  for (int i = 0; i < 6; ++i) reported_q_[i] = arm_.q()[i] + EncoderError(i, arm_.q()[i]);
   ControllerState& s = rtde_state_;
   s.timestamp = time_;
   s.actual_q = ToArray(reported_q_);

@@ -9,7 +9,6 @@
 #include <Eigen/Geometry>
 #include <cstdint>
 #include <optional>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -89,13 +88,14 @@ class Ur5Controller {
 
   void RuntimeError(int session_id, int line, int column, const std::string& text);
   void AdvanceProgram();
-  double Noise();
+  // The encoder's error on `joint` at angle q: a fixed function of the seed, the joint and q, so
+  // an arm at rest reads the same however many control ticks have passed.
+  double EncoderError(int joint, double q) const;
   void SampleState();
   bool powered() const;
 
   Ur5EmulatorOptions options_;
   Ur5Arm arm_;
-  std::mt19937_64 rng_;
   double dt_;
   double time_;
   robot::RobotMode robot_mode_;

@@ -138,6 +138,21 @@ TEST(Lt360Emulator, TrueAngleFollowsTheErrorModel) {
   EXPECT_EQ(a, true_angles(3));
   EXPECT_NE(a, true_angles(4));
   EXPECT_GT(a.back(), 0.05);  // the RMS error is near sigma = 0.1 deg
+
+  // The error belongs to the position: going back to an angle, by another path and after other
+  // moves (as a resumed scan does), lands on the same true angle.
+  Lt360EmulatorOptions noisy;
+  noisy.sigma_deg = 0.1;
+  noisy.seed = 3;
+  Lt360Emulator table(noisy, std::make_shared<SteppedEmulatorClock>(100));
+  SerialPort serial(table.device_path(), 9600);
+  Ask(serial, "GO 50.0");
+  Ask(serial, "CP");
+  const double first_visit = table.TrueAngleDeg();
+  for (const char* detour : {"GO 120.0", "GO 50.0", "GO 300.0", "GO 50.0"}) Ask(serial, detour);
+  Ask(serial, "CP");
+  EXPECT_EQ(table.TrueAngleDeg(), first_visit);
+  EXPECT_EQ(first_visit, a[9]);  // the 10th angle of the sequence above is 50 deg too
   EXPECT_LT(a.back(), 0.15);
 }
 
