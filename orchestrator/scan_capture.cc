@@ -103,6 +103,7 @@ std::optional<cv::Mat> ScanCapture::operator()(const planner::CellView& view) {
 
 cv::Mat ScanCapture::TakeLive(const planner::CellView& view, int index) {
   const std::string image_id = CaptureImageId(index);
+  cell_.SetPlantKeepOut(plant_keep_out_, options_.motion_timeout);
   cell_.MoveJoints(view.joints, options_.motion_timeout);
   cell_.TurntableGoto(view.turntable_angle, options_.motion_timeout);
   cell_.WaitFreshState(options_.motion_timeout);  // the state read after both motions ended

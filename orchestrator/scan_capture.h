@@ -30,6 +30,9 @@ struct ScanCaptureOptions {
   // A recorded capture answers a request only at the same joints and table angle (radians).
   double pose_tolerance = 1e-6;
   segmentation::MaskOptions mask;
+  // The arm's driver keeps the arm this far (metres) from the plant proxy swept about the table
+  // axis (kinematics::PlantKeepOut).
+  double plant_keep_out_margin = 0.02;
 };
 
 class ScanCapture {
@@ -47,6 +50,11 @@ class ScanCapture {
   // stops with nothing lost and can be resumed.
   std::optional<cv::Mat> operator()(const planner::CellView& view);
 
+  // The plant's space the arm must stay out of from now on (empty: no plant known yet). It
+  // goes to the arm's driver before every live move, so a restarted driver gets it back and a
+  // new scan never inherits the previous plant's.
+  void SetPlantKeepOut(kinematics::PlantKeepOut keep_out) { plant_keep_out_ = std::move(keep_out); }
+
   int taken() const { return taken_; }    // captured through the cell in this run
   int reused() const { return reused_; }  // answered from the scan directory
 
@@ -59,6 +67,7 @@ class ScanCapture {
   std::function<void()> persist_;
   ScanCaptureOptions options_;
   std::function<void(const std::string&)> progress_;
+  kinematics::PlantKeepOut plant_keep_out_;
   int next_index_ = 0;
   int taken_ = 0;
   int reused_ = 0;

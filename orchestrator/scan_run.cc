@@ -12,6 +12,7 @@
 #include "core/camera/camera_io.h"
 #include "core/dataset/dataset_reader.h"
 #include "core/geometry/mesh_io.h"
+#include "core/kinematics/plant_keep_out.h"
 #include "core/kinematics/row_major_pose.h"
 #include "core/traits/traits_writer.h"
 #include "core/util/clock.h"
@@ -247,6 +248,11 @@ class ScanRun {
           // A resumed scan replays the stages it had passed: only later ones are entered.
           const ScanState state = StateOfStage(stage);
           if (Row(state).step > Row(machine_.state()).step) Enter(state, "");
+        },
+        [&](const ppr::PlantProxy& proxy) {
+          capture.SetPlantKeepOut(kinematics::PlantKeepOutFromVoxels(
+              proxy.NotFreeCentres(), proxy.voxel_size(), calibration_->T_base_table,
+              options_.capture.plant_keep_out_margin));
         });
     if (machine_.state() != ScanState::kPruneViews) Enter(ScanState::kPruneViews, "");
     outcome_.captured_now += capture.taken();

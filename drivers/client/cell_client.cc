@@ -131,6 +131,20 @@ double CellClient::Robot(int8_t kind, std::chrono::milliseconds timeout) {
       command.request_id, [&] { PublishCommand(channels::kRobotCommand, command); }, timeout);
 }
 
+double CellClient::SetPlantKeepOut(const kinematics::PlantKeepOut& keep_out,
+                                   std::chrono::milliseconds timeout) {
+  avc::robot_command_t command{};
+  command.request_id = NextId("keep-out");
+  command.kind = avc::robot_command_t::KIND_SET_PLANT_KEEP_OUT;
+  kinematics::RowMajorFromIsometry(keep_out.T_base_table, command.T_base_table);
+  command.keep_out_z0 = keep_out.z0_m;
+  command.keep_out_slab = keep_out.slab_m;
+  command.keep_out_slabs = static_cast<int16_t>(keep_out.radius_m.size());
+  command.keep_out_radius = keep_out.radius_m;
+  return SendUntilDone(
+      command.request_id, [&] { PublishCommand(channels::kRobotCommand, command); }, timeout);
+}
+
 double CellClient::MoveJoints(const kinematics::JointVector& q, std::chrono::milliseconds timeout) {
   avc::robot_command_t command{};
   command.request_id = NextId("move");

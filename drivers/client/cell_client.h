@@ -30,6 +30,7 @@
 #include "core/bus/bus.h"
 #include "core/bus/event_loop.h"
 #include "core/kinematics/dh_parameters.h"
+#include "core/kinematics/plant_keep_out.h"
 #include "core/products/product_receiver.h"
 
 namespace avc::client {
@@ -68,6 +69,9 @@ class CellClient {
   // Each returns the seconds from sending to DONE.
   double MoveJoints(const kinematics::JointVector& q, std::chrono::milliseconds timeout);
   double Robot(int8_t kind, std::chrono::milliseconds timeout);  // power, brakes, ...
+  // The plant's space the arm must stay out of (an empty one clears it).
+  double SetPlantKeepOut(const kinematics::PlantKeepOut& keep_out,
+                         std::chrono::milliseconds timeout);
   double TurntableGoto(double angle_rad, std::chrono::milliseconds timeout);
   CapturedView Capture(const std::string& image_id, int8_t encoding,
                        std::chrono::milliseconds timeout);

@@ -67,6 +67,15 @@ void RobotNode::Handle(const Command& command) {
     case Command::KIND_STOP:
       Stop(command);
       return;
+    case Command::KIND_SET_PLANT_KEEP_OUT:
+      refusal = SetPlantKeepOut(command);
+      if (refusal.empty()) {
+        Ack(command.request_id, avc::ack_t::STATUS_DONE,
+            config_.envelope.plant_keep_out.empty() ? "plant keep-out cleared"
+                                                    : "plant keep-out set");
+        return;
+      }
+      break;
     case Command::KIND_POWER_ON:
     case Command::KIND_BRAKE_RELEASE:
     case Command::KIND_UNLOCK_PROTECTIVE_STOP:
@@ -95,6 +104,27 @@ void RobotNode::Stop(const Command& command) {
   }
   if (active_) Finish(avc::ack_t::STATUS_FAILED, "stopped by request " + command.request_id);
   Ack(command.request_id, avc::ack_t::STATUS_DONE, "stopj sent");
+}
+
+std::string RobotNode::SetPlantKeepOut(const Command& command) {
+  kinematics::PlantKeepOut keep_out;
+  keep_out.T_base_table = IsometryFromRowMajor(command.T_base_table);
+  keep_out.z0_m = command.keep_out_z0;
+  keep_out.slab_m = command.keep_out_slab;
+  keep_out.radius_m = command.keep_out_radius;
+  if (keep_out.empty()) {
+    config_.envelope.plant_keep_out = {};
+    log::Info("{}: plant keep-out cleared by '{}'", config_.service, command.request_id);
+    return {};
+  }
+  if (auto error = keep_out.Validate(); !error.empty()) return error;
+  log::Info(
+      "{}: plant keep-out from '{}': {} slabs of {:.3f} m from z {:.3f} m (table frame), "
+      "widest {:.3f} m",
+      config_.service, command.request_id, keep_out.radius_m.size(), keep_out.slab_m, keep_out.z0_m,
+      *std::max_element(keep_out.radius_m.begin(), keep_out.radius_m.end()));
+  config_.envelope.plant_keep_out = std::move(keep_out);
+  return {};
 }
 
 std::string RobotNode::StartMotion(const Command& command) {

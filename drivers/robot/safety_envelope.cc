@@ -13,21 +13,32 @@ namespace {
 constexpr std::array<const char*, 5> kFrameNames = {"elbow", "wrist 1", "wrist 2", "wrist 3",
                                                     "flange"};
 
+std::string CheckKeepOut(const std::optional<KeepOutCylinder>& cylinder, const Eigen::Vector3d& p,
+                         const std::string& name) {
+  if (!cylinder || !cylinder->Contains(p)) return {};
+  return fmt::format(
+      "{} would enter the keep-out cylinder ({:.3f} m from its axis, radius {:.3f} m)", name,
+      cylinder->RadialDistance(p), cylinder->radius_m);
+}
+
+std::string CheckPlantKeepOut(const kinematics::PlantKeepOut& plant, const Eigen::Vector3d& p,
+                              const std::string& name) {
+  if (!plant.Contains(p)) return {};
+  return fmt::format(
+      "{} would enter the plant's keep-out: {:.3f} m from the turntable axis where the plant "
+      "proxy, swept about the axis and with margin, reaches {:.3f} m",
+      name, plant.AxisDistance(p), plant.RadiusAt(p));
+}
+
 std::string CheckPoint(const SafetyEnvelope& envelope, const Eigen::Vector3d& p,
                        const std::string& name) {
   if (envelope.table_z_base_m && p.z() < *envelope.table_z_base_m + envelope.table_clearance_m) {
     return fmt::format("{} would be at z = {:.3f} m, below the table plane {:.3f} m + {:.3f} m",
                        name, p.z(), *envelope.table_z_base_m, envelope.table_clearance_m);
   }
-  if (envelope.keep_out) {
-    const KeepOutCylinder& c = *envelope.keep_out;
-    const double radial = (p.head<2>() - c.centre_base).norm();
-    if (radial < c.radius_m && p.z() >= c.z_min_m && p.z() <= c.z_max_m) {
-      return fmt::format(
-          "{} would enter the keep-out cylinder ({:.3f} m from its axis, radius "
-          "{:.3f} m)",
-          name, radial, c.radius_m);
-    }
+  if (auto error = CheckKeepOut(envelope.keep_out, p, name); !error.empty()) return error;
+  if (auto error = CheckPlantKeepOut(envelope.plant_keep_out, p, name); !error.empty()) {
+    return error;
   }
   return {};
 }
@@ -81,9 +92,10 @@ std::string SafetyEnvelope::Validate() const {
     }
   }
   if (table_z_base_m && !std::isfinite(*table_z_base_m)) return "table_z_base_m is not finite";
-  if (keep_out && !(keep_out->radius_m >= 0 && keep_out->z_min_m <= keep_out->z_max_m)) {
-    return "keep_out cylinder needs radius >= 0 and z_min <= z_max";
+  if (keep_out) {
+    if (auto error = keep_out->Validate(); !error.empty()) return "keep_out: " + error;
   }
+  if (auto error = plant_keep_out.Validate(); !error.empty()) return error;
   if (!(max_joint_speed_rad_s > 0 && max_joint_acceleration_rad_s2 > 0 &&
         max_linear_speed_m_s > 0 && max_linear_acceleration_m_s2 > 0)) {
     return "speed and acceleration caps must be positive";

@@ -1,9 +1,9 @@
 #pragma once
 
-// Where the arm may go: joint limits, a table plane the links stay above, a keep-out cylinder
-// around the plant, and speed/acceleration caps. Moves are checked along their whole path
-// (sampled): movej's straight joint-space line, movel's straight tool line through nominal IK.
-// Pure geometry on the nominal kinematics; no LCM, no sockets.
+// Where the arm may go: joint limits, a table plane the links stay above, a fixed keep-out
+// cylinder (the turntable) and one around the plant proxy, and speed/acceleration caps. Moves are
+// checked along their whole path (sampled): movej's straight joint-space line, movel's straight
+// tool line through nominal IK. Pure geometry on the nominal kinematics; no LCM, no sockets.
 
 #include <Eigen/Geometry>
 #include <optional>
@@ -11,17 +11,14 @@
 #include <vector>
 
 #include "core/kinematics/dh_parameters.h"
+#include "core/kinematics/keep_out.h"
+#include "core/kinematics/plant_keep_out.h"
 
 namespace avc::robot {
 
 using kinematics::JointVector;
 
-struct KeepOutCylinder {
-  Eigen::Vector2d centre_base = Eigen::Vector2d::Zero();  // vertical axis through (x, y), base
-  double radius_m = 0;
-  double z_min_m = 0;  // base z range the cylinder spans
-  double z_max_m = 0;
-};
+using kinematics::KeepOutCylinder;
 
 struct SafetyEnvelope {
   JointVector joint_min = JointVector::Constant(-kinematics::kJointLimitRad);
@@ -29,7 +26,10 @@ struct SafetyEnvelope {
   // Every checked point keeps z >= table_z_base_m + table_clearance_m (base frame, z up).
   std::optional<double> table_z_base_m;
   double table_clearance_m = 0.02;
-  std::optional<KeepOutCylinder> keep_out;
+  std::optional<KeepOutCylinder> keep_out;  // fixed, from the configuration
+  // The plant's, set by the orchestrator as the plant proxy grows (robot_command_t
+  // KIND_SET_PLANT_KEEP_OUT); empty until then.
+  kinematics::PlantKeepOut plant_keep_out;
   // Points on the tool (flange frame) checked besides the elbow, wrists and flange: e.g. the
   // camera body's corners.
   std::vector<Eigen::Vector3d> tool_points_flange;

@@ -43,6 +43,7 @@ struct Run {
   kinematics::JointVector joints;
   std::vector<double> distances;  // Phase 1's per height
   std::function<void(ActiveVisionStage)> stage;
+  const ProxyFunction& proxy_changed;
 
   // Captures `view` and records it; false when the capture failed.
   bool Take(PlannedView planned) {
@@ -54,7 +55,10 @@ struct Run {
     }
     if (result.views.empty()) stage(ActiveVisionStage::kInitialCapture);
     joints = planned.view.joints;
-    if (result.proxy) result.proxy->AddView(planned.view.camera, *mask);
+    if (result.proxy) {
+      result.proxy->AddView(planned.view.camera, *mask);
+      if (proxy_changed) proxy_changed(*result.proxy);
+    }
     masks.push_back(std::move(*mask));
     result.views.push_back(std::move(planned));
     return true;
@@ -118,6 +122,7 @@ struct Run {
     }
     result.proxy.emplace(ppr::BoundsFromViews(cameras, masks), options.proxy);
     for (size_t i = 0; i < cameras.size(); ++i) result.proxy->AddView(cameras[i], masks[i]);
+    if (proxy_changed) proxy_changed(*result.proxy);
   }
 
   // Views in parallel: each is independent, and the tree is built before (tree() is lazy).
@@ -230,7 +235,7 @@ size_t ActiveVisionResult::KeptCount() const {
 
 ActiveVisionResult RunActiveVision(const sim::CellTruth& cell, const CaptureFunction& capture,
                                    const ActiveVisionOptions& options,
-                                   const StageFunction& on_stage) {
+                                   const StageFunction& on_stage, const ProxyFunction& on_proxy) {
   if (options.levels < 1 || options.levels > static_cast<int>(options.elevations_deg.size())) {
     throw std::invalid_argument(fmt::format("active vision: {} heights but {} elevations given",
                                             options.levels, options.elevations_deg.size()));
@@ -238,7 +243,7 @@ ActiveVisionResult RunActiveVision(const sim::CellTruth& cell, const CaptureFunc
   const auto stage = [&](ActiveVisionStage next) {
     if (on_stage) on_stage(next);
   };
-  Run run{cell, capture, options, {}, {}, sim::StartJoints(cell), {}, stage};
+  Run run{cell, capture, options, {}, {}, sim::StartJoints(cell), {}, stage, on_proxy};
   stage(ActiveVisionStage::kFrame);
   for (int level = 0; level < options.levels; ++level) run.InitialLevel(level);
   stage(ActiveVisionStage::kActiveVision);

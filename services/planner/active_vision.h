@@ -92,12 +92,16 @@ struct ActiveVisionResult {
 // this stage), the next-best-view rounds, redundant-view removal.
 enum class ActiveVisionStage { kFrame, kInitialCapture, kActiveVision, kPruneViews };
 using StageFunction = std::function<void(ActiveVisionStage stage)>;
+// Hears the plant proxy each time it was created or carved by a new view (e.g. to keep the
+// arm out of the plant's space).
+using ProxyFunction = std::function<void(const ppr::PlantProxy& proxy)>;
 
 // Throws std::runtime_error naming the problem when no plant is found by the colour filter in a
 // framing frame or no view of the first height is reachable. `on_stage` (optional) hears each
-// stage as it starts.
+// stage as it starts, `on_proxy` (optional) each proxy update.
 ActiveVisionResult RunActiveVision(const sim::CellTruth& cell, const CaptureFunction& capture,
                                    const ActiveVisionOptions& options = {},
-                                   const StageFunction& on_stage = {});
+                                   const StageFunction& on_stage = {},
+                                   const ProxyFunction& on_proxy = {});
 
 }  // namespace avc::planner

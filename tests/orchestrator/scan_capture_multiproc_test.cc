@@ -2,7 +2,8 @@
 // simulated cell and every real driver (separate processes on the real bus), each image kept in
 // the scan directory and scan.json. A restarted orchestrator (new client, record read back from
 // disk) gets the views it already has from their files with no capture, recaptures only a
-// deleted one, refuses a plan that contradicts the record, and skips a view the arm refuses.
+// deleted one, refuses a plan that contradicts the record, and skips a view the arm refuses
+// (outside its limits or inside the plant's keep-out).
 
 #include <gtest/gtest.h>
 
@@ -10,6 +11,7 @@
 #include <numbers>
 #include <opencv2/core.hpp>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "bench/devices/cell_processes.h"
@@ -88,10 +90,14 @@ TEST(ScanCaptureMultiproc, KeepsEveryImageAndResumesWithoutCapturingAgain) {
       ScanRecord record;
       record.scan_id = "capture-test";
       int saves = 0;
-      ScanCapture capture(client, scan_dir, record, [&] {
-        SaveScanRecord(record, scan_dir);
-        ++saves;
-      });
+      std::vector<std::string> progress;
+      ScanCapture capture(
+          client, scan_dir, record,
+          [&] {
+            SaveScanRecord(record, scan_dir);
+            ++saves;
+          },
+          {}, [&](const std::string& line) { progress.push_back(line); });
       for (int n = 0; n < 3; ++n) {
         const std::optional<cv::Mat> mask = capture(views[n]);
         ASSERT_TRUE(mask.has_value());
@@ -107,6 +113,19 @@ TEST(ScanCaptureMultiproc, KeepsEveryImageAndResumesWithoutCapturingAgain) {
       impossible.joints[1] = 7.0;
       EXPECT_FALSE(capture(impossible).has_value());
       EXPECT_EQ(record.captures.size(), 3u);
+
+      // A plant keep-out the arm cannot stay out of (60 cm about the turntable axis at every
+      // height): the next view is refused by the driver and skipped too. The ScanCapture of the
+      // restarted orchestrator below starts with none and clears it in the driver.
+      kinematics::PlantKeepOut plant;
+      plant.T_base_table = model.T_base_table;
+      plant.z0_m = -0.6;
+      plant.radius_m.assign(60, 0.6);
+      capture.SetPlantKeepOut(plant);
+      EXPECT_FALSE(capture(views[3]).has_value());
+      EXPECT_EQ(record.captures.size(), 3u);
+      ASSERT_FALSE(progress.empty());
+      EXPECT_NE(progress.back().find("plant's keep-out"), std::string::npos) << progress.back();
     }
     EXPECT_EQ(sim::ReadTruthLog(cell.truth_log()).size(), 3u);
 

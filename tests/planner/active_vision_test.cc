@@ -71,11 +71,19 @@ TEST(ActiveVision, FramesOrbitsAddsViewsAndPrunesWithoutLosingCoverage) {
     ++captures;
     return LabelCapture(plant.scene, view);
   };
-  const ActiveVisionResult result =
-      RunActiveVision(plant.cell, capture, SmallRun(), [&](ActiveVisionStage stage) {
+  // The proxy is announced when it is made from the first height and after each view after.
+  std::vector<int> proxy_views;
+  const ActiveVisionResult result = RunActiveVision(
+      plant.cell, capture, SmallRun(),
+      [&](ActiveVisionStage stage) {
         stages.push_back(stage);
         captures_at_stage.push_back(captures);
-      });
+      },
+      [&](const ppr::PlantProxy& proxy) { proxy_views.push_back(proxy.view_count()); });
+  ASSERT_FALSE(proxy_views.empty());
+  EXPECT_EQ(proxy_views.front(), 10);
+  EXPECT_EQ(proxy_views.size(), result.views.size() - 10 + 1);
+  for (size_t i = 1; i < proxy_views.size(); ++i) EXPECT_EQ(proxy_views[i], proxy_views[i - 1] + 1);
   EXPECT_EQ(stages, (std::vector<ActiveVisionStage>{
                         ActiveVisionStage::kFrame, ActiveVisionStage::kInitialCapture,
                         ActiveVisionStage::kActiveVision, ActiveVisionStage::kPruneViews}));

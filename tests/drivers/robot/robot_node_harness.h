@@ -122,7 +122,7 @@ struct RobotNodeHarness {
   }
 
   static Command Simple(const std::string& id, int8_t kind) {
-    Command command;
+    Command command{};
     command.request_id = id;
     command.kind = kind;
     command.auth_size = 0;

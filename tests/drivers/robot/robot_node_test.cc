@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "core/kinematics/forward_kinematics.h"
 #include "core/kinematics/pose_difference.h"
@@ -87,6 +88,59 @@ TEST_F(RobotNodeTest, OutsideTheEnvelopeOrNotRunningIsRefusedWithAReason) {
   EXPECT_EQ(h_.Run(RobotNodeHarness::Simple("", Command::KIND_STOP)).status, Ack::STATUS_REFUSED);
   EXPECT_EQ(h_.Run(RobotNodeHarness::Simple("odd", 42)).status, Ack::STATUS_REFUSED);
   EXPECT_EQ(h_.emulator->Snapshot().scripts_run, 0);
+}
+
+// A plant keep-out command: `radii` per 2 cm slab from z0, about a vertical axis through
+// `axis` (base frame).
+Command PlantKeepOut(const std::string& id, const Eigen::Vector3d& axis, double z0,
+                     std::vector<double> radii) {
+  Command command = RobotNodeHarness::Simple(id, Command::KIND_SET_PLANT_KEEP_OUT);
+  Eigen::Isometry3d T_base_table = Eigen::Isometry3d::Identity();
+  T_base_table.translation() = axis;
+  kinematics::RowMajorFromIsometry(T_base_table, command.T_base_table);
+  command.keep_out_z0 = z0;
+  command.keep_out_slab = 0.02;
+  command.keep_out_slabs = static_cast<int16_t>(radii.size());
+  command.keep_out_radius = std::move(radii);
+  return command;
+}
+
+TEST_F(RobotNodeTest, ThePlantKeepOutRefusesMovesIntoItUntilCleared) {
+  h_.PowerUp();
+  // A plant whose swept space reaches the flange's position at kTarget: the move there must not
+  // start. The axis is 5 cm beside the flange; the slabs span 10 cm around its height.
+  const Eigen::Vector3d flange =
+      kinematics::ForwardKinematics(h_.cell.dh, Eigen::Map<const JointVector>(kTarget.data()))
+          .translation();
+  const Eigen::Vector3d axis = flange - Eigen::Vector3d(0.05, 0, 0) - Eigen::Vector3d::UnitZ();
+  const std::vector<double> wide(5, 0.08);
+  const Ack set = h_.Run(PlantKeepOut("keep-out", axis, 1 - 0.05, wide));
+  ASSERT_EQ(set.status, Ack::STATUS_DONE) << set.reason;
+  EXPECT_EQ(set.reason, "plant keep-out set");
+  const Ack refused = h_.Run(RobotNodeHarness::MoveJoints("into-plant", kTarget));
+  EXPECT_EQ(refused.status, Ack::STATUS_REFUSED);
+  EXPECT_NE(refused.reason.find("plant's keep-out"), std::string::npos) << refused.reason;
+  EXPECT_EQ(h_.emulator->Snapshot().scripts_run, 0);
+
+  // Unusable values are refused and leave the keep-out in place; so does an unsigned clear.
+  EXPECT_EQ(h_.Run(PlantKeepOut("negative", axis, 0, {0.1, -0.1})).status, Ack::STATUS_REFUSED);
+  EXPECT_EQ(h_.Run(PlantKeepOut("nan", axis, std::nan(""), {0.1})).status, Ack::STATUS_REFUSED);
+  EXPECT_EQ(h_.Run(PlantKeepOut("too-many", axis, 0, std::vector<double>(2000, 0.1))).status,
+            Ack::STATUS_REFUSED);
+  h_.SendAsIs(PlantKeepOut("unsigned-clear", axis, 0, {}));
+  ASSERT_TRUE(h_.RunUntil([&] { return h_.FinalAck("unsigned-clear").has_value(); }));
+  EXPECT_NE(h_.FinalAck("unsigned-clear")->reason.find("authentication"), std::string::npos);
+  EXPECT_EQ(h_.Run(RobotNodeHarness::MoveJoints("still-kept-out", kTarget)).status,
+            Ack::STATUS_REFUSED);
+
+  // A narrow plant (2 cm) leaves the flange 5 cm away free; no slabs clears it altogether.
+  const Ack narrow = h_.Run(PlantKeepOut("narrow", axis, 1 - 0.05, std::vector<double>(5, 0.02)));
+  ASSERT_EQ(narrow.status, Ack::STATUS_DONE) << narrow.reason;
+  const Ack beside = h_.Run(RobotNodeHarness::MoveJoints("beside-plant", kTarget));
+  EXPECT_EQ(beside.status, Ack::STATUS_DONE) << beside.reason;
+  const Ack cleared = h_.Run(PlantKeepOut("clear", axis, 0, {}));
+  ASSERT_EQ(cleared.status, Ack::STATUS_DONE) << cleared.reason;
+  EXPECT_EQ(cleared.reason, "plant keep-out cleared");
 }
 
 TEST_F(RobotNodeTest, ProtectiveStopFailsTheMotionAndUnlockLetsTheNextOneFinish) {
