@@ -18,6 +18,7 @@
 #include "core/util/clock.h"
 #include "core/util/file_io.h"
 #include "orchestrator/report_html.h"
+#include "orchestrator/scan_processing.h"
 #include "services/builder/build_report.h"
 #include "services/builder/reconstruction_output.h"
 #include "services/clusterer/cluster_folder.h"
@@ -283,35 +284,18 @@ class ScanRun {
     }
     camera::WriteCamerasJson(dir_ / "cameras.json", cameras);
     camera::WriteColmapText(dir_ / "colmap", cameras);
+    if (options_.on_kept_cameras) options_.on_kept_cameras(record_.scan_id, cameras);
   }
 
   void Build() {
-    dataset::ViewSet set = dataset::ReadDataset(dir_);
-    const builder::Reconstruction reconstruction = builder::Reconstruct(
-        set, options_.build, [this](const std::string& stage, size_t done, size_t total) {
-          if (done == total) Report(fmt::format("{} {}/{}", stage, done, total));
-        });
-    const builder::BuildReport report =
-        builder::MakeBuildReport(reconstruction, options_.build.method, set.ground_truth_mesh);
-    builder::WriteReconstruction(model_dir_, set, reconstruction, report, /*overwrite=*/true);
+    BuildModel(dir_, model_dir_, options_.build, [this](const std::string& line) { Report(line); });
   }
 
-  void MergeCluster() {
-    clusters_ = clusterer::ClusterFolderFiles(model_dir_ / "points.ply", model_dir_ / "ppr.bt",
-                                              options_.cluster);
-    if (!clusters_->problem.empty()) {
-      throw std::runtime_error("the points could not be clustered: " + clusters_->problem);
-    }
-    clusterer::WriteClustersPly(model_dir_ / "clusters.ply", *clusters_);
-  }
+  void MergeCluster() { clusters_ = ClusterModel(model_dir_, options_.cluster); }
 
   void Surface() {
     if (!clusters_) MergeCluster();  // resumed here: the same files give the same clusters
-    surface_ = surfacer::SurfaceClusters(*clusters_);
-    if (!surface_->problem.empty()) {
-      throw std::runtime_error("no surface could be made: " + surface_->problem);
-    }
-    geometry::WriteMeshPly(model_dir_ / "mesh.ply", surface_->mesh);
+    surface_ = SurfaceModel(*clusters_, model_dir_);
   }
 
   void Traits() {

@@ -26,7 +26,9 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "core/camera/camera_io.h"
 #include "drivers/client/cell_client.h"
 #include "orchestrator/scan_capture.h"
 #include "orchestrator/scan_record.h"
@@ -48,6 +50,10 @@ struct ScanRunOptions {
   // Polled between steps and when a step fails: true (e.g. after SIGTERM) pauses the scan
   // instead of faulting it. Optional.
   std::function<bool()> stop_requested;
+  // Hears the kept views' cameras once they are final, before BUILD (e.g. to publish them for
+  // the log, so `avc replay` can rebuild the model). Optional.
+  std::function<void(const std::string& scan_id, const std::vector<camera::NamedCamera>& cameras)>
+      on_kept_cameras;
 };
 
 struct ScanProgress {

@@ -26,6 +26,7 @@ inline constexpr std::string_view kCameraQuery = "CAMERA_QUERY";
 inline constexpr std::string_view kCalibration = "CALIBRATION";
 inline constexpr std::string_view kViewPlan = "VIEW_PLAN";
 inline constexpr std::string_view kOrchestratorState = "ORCH_STATE";
+inline constexpr std::string_view kScanCameras = "SCAN_CAMERAS";
 inline constexpr std::string_view kProductAck = "PRODUCT_ACK";
 inline constexpr std::string_view kBuildCommand = "BUILD_COMMAND";
 // Product channels (bulk URL, product_chunk_t).
@@ -57,6 +58,7 @@ inline constexpr std::array kAll = {kHeartbeat,
                                     kCalibration,
                                     kViewPlan,
                                     kOrchestratorState,
+                                    kScanCameras,
                                     kProductAck,
                                     kBuildCommand,
                                     kProductImage,

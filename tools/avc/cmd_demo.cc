@@ -167,6 +167,9 @@ int RunDemo(const DemoArgs& args) {
   scan.planner.max_views = args.max_views;
   scan.stop_requested = [&loop] { return loop.quitting(); };
   ScanStateBroadcast broadcast(bus, loop);
+  scan.on_kept_cameras = [&broadcast](const std::string& id, const auto& cameras) {
+    broadcast.PublishKeptCameras(id, cameras);
+  };
   const orchestrator::ScanOutcome outcome =
       orchestrator::RunScan(client, scan, [&](const auto& p) { broadcast(p); });
   std::cerr << "\n";

@@ -77,6 +77,9 @@ int RunScanCommand(const ScanArgs& args) {
   client::CellClient cell(bus, loop, "avc-scan", SenderKey(args.auth, bus.cell()));
 
   ScanStateBroadcast broadcast(bus, loop);
+  options.on_kept_cameras = [&broadcast](const std::string& id, const auto& cameras) {
+    broadcast.PublishKeptCameras(id, cameras);
+  };
   const orchestrator::ScanOutcome outcome =
       orchestrator::RunScan(cell, options, [&](const auto& p) { broadcast(p); });
   std::cerr << "\n";

@@ -4,11 +4,13 @@
 #include <unistd.h>
 
 #include <avc/orchestrator_state_t.hpp>
+#include <avc/scan_cameras_t.hpp>
 #include <chrono>
 #include <iostream>
 #include <string>
 
 #include "core/bus/channels.h"
+#include "core/messages/camera_message.h"
 #include "core/util/clock.h"
 
 namespace avc::cli {
@@ -62,6 +64,17 @@ void ScanStateBroadcast::operator()(const orchestrator::ScanProgress& progress) 
   } else {
     heartbeat_.Set(bus::ServiceState::kBusy, state);
   }
+}
+
+void ScanStateBroadcast::PublishKeptCameras(const std::string& scan_id,
+                                            const std::vector<camera::NamedCamera>& cameras) {
+  avc::scan_cameras_t message{};
+  message.scan_id = scan_id;
+  for (const camera::NamedCamera& c : cameras) {
+    message.cameras.push_back(messages::CameraToMessage(c.camera, c.name, "scan"));
+  }
+  message.num_cameras = static_cast<int32_t>(message.cameras.size());
+  bus_.Publish(channels::kScanCameras, message);
 }
 
 void ScanStateBroadcast::Publish() {

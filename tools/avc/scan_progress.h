@@ -5,10 +5,13 @@
 // the exit code.
 
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "core/bus/background_heartbeat.h"
 #include "core/bus/bus.h"
 #include "core/bus/event_loop.h"
+#include "core/camera/camera_io.h"
 #include "orchestrator/scan_run.h"
 
 namespace avc::cli {
@@ -30,6 +33,11 @@ class ScanStateBroadcast {
   ScanStateBroadcast& operator=(const ScanStateBroadcast&) = delete;
 
   void operator()(const orchestrator::ScanProgress& progress);
+  // Publishes the kept views' cameras (scan_cameras_t on SCAN_CAMERAS) for the log: with the
+  // image products they are what `avc replay` rebuilds the model from. For
+  // ScanRunOptions::on_kept_cameras.
+  void PublishKeptCameras(const std::string& scan_id,
+                          const std::vector<camera::NamedCamera>& cameras);
 
  private:
   void Publish();

@@ -1,0 +1,114 @@
+#include "orchestrator/scan_replay_node.h"
+
+#include <fmt/format.h>
+
+#include <avc/scan_cameras_t.hpp>
+#include <exception>
+#include <map>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/bus/channels.h"
+#include "core/camera/camera_io.h"
+#include "core/messages/camera_message.h"
+#include "core/products/product_archive.h"
+#include "core/products/product_receiver.h"
+#include "core/util/file_io.h"
+#include "core/util/log.h"
+#include "orchestrator/scan_processing.h"
+
+namespace avc::orchestrator {
+namespace {
+
+namespace fs = std::filesystem;
+
+class ScanReplayNode final : public record::ReplayNode {
+ public:
+  ScanReplayNode(bus::Bus& bus, const fs::path& output_dir)
+      : bus_(bus),
+        dir_(output_dir / "scan"),
+        images_(bus, "avc-replay-scan", std::string(channels::kProductImage),
+                [this](const products::Product& product, const bus::RxInfo&) { Keep(product); }) {
+    cameras_subscription_ = bus.Subscribe<avc::scan_cameras_t>(
+        channels::kScanCameras,
+        [this](const avc::scan_cameras_t& message, const bus::RxInfo&) { cameras_ = message; });
+  }
+  ~ScanReplayNode() override { bus_.Unsubscribe(cameras_subscription_); }
+
+  void Finish() override {
+    if (!cameras_) {
+      outcome_ =
+          "nothing rebuilt: the log holds no SCAN_CAMERAS (no scan reached BUILD while "
+          "it was recorded)";
+      return;
+    }
+    try {
+      Rebuild();
+    } catch (const std::exception& error) {
+      outcome_ = fmt::format("scan {}: not rebuilt: {}", cameras_->scan_id, error.what());
+      log::Error("replay: {}", outcome_);
+    }
+  }
+
+  fs::path OutputDir() const override { return dir_; }
+  std::string Describe() const override { return outcome_; }
+
+ private:
+  // Images by file name; a later product of the same name (a recapture) replaces the earlier.
+  void Keep(const products::Product& product) {
+    try {
+      products::StoredFile file = products::ToStoredFile(product);
+      images_by_name_[file.relative_path.filename().string()] = std::move(file.bytes);
+    } catch (const std::invalid_argument& error) {
+      log::Warn("replay: image product '{}' skipped: {}", product.name, error.what());
+    }
+  }
+
+  void Rebuild() {
+    std::vector<camera::NamedCamera> cameras;
+    fs::create_directories(dir_ / "images");
+    for (const avc::camera_t& message : cameras_->cameras) {
+      const auto image = images_by_name_.find(message.image_id);
+      if (image == images_by_name_.end()) {
+        throw std::runtime_error(
+            fmt::format("kept view {} has no image product in the log (recorded from later on?)",
+                        message.image_id));
+      }
+      WriteFileAtomically(dir_ / "images" / message.image_id, image->second);
+      cameras.push_back({message.image_id, messages::CameraFromMessage(message)});
+    }
+    camera::WriteCamerasJson(dir_ / "cameras.json", cameras);
+    BuildModel(dir_, dir_ / "model", builder::ReconstructOptions{});
+    const messages::ClustersContent clusters =
+        ClusterModel(dir_ / "model", clusterer::ClustererOptions{});
+    const surfacer::SurfacerResult surface = SurfaceModel(clusters, dir_ / "model");
+    outcome_ = fmt::format(
+        "scan {}: {} kept views of {} images rebuilt; model/mesh.ply has {} "
+        "triangles",
+        cameras_->scan_id, cameras.size(), images_by_name_.size(), surface.mesh.faces.size());
+  }
+
+  bus::Bus& bus_;
+  fs::path dir_;
+  products::ProductReceiver images_;
+  bus::Bus::SubscriptionId cameras_subscription_ = 0;
+  std::optional<avc::scan_cameras_t> cameras_;
+  std::map<std::string, std::string> images_by_name_;
+  std::string outcome_;
+};
+
+}  // namespace
+
+void RegisterScanReplayNode(record::NodeRegistry& registry) {
+  registry.Register("scan",
+                    "rebuilds the recorded scan's model from its images and kept cameras "
+                    "(SCAN_CAMERAS) with avc scan's own steps, in <output>/scan",
+                    [](bus::Bus& bus, const fs::path& output_dir) {
+                      return std::make_unique<ScanReplayNode>(bus, output_dir);
+                    });
+}
+
+}  // namespace avc::orchestrator
