@@ -130,6 +130,17 @@ TEST(OccupiedVoxelsFromBinary, GarbageWrongSizeAndHugeTreesAreRefused) {
   tree.updateNode(octomap::point3d(0.01f, 0.01f, 0.01f), true);
   std::ostringstream bytes;
   ASSERT_TRUE(tree.writeBinaryConst(bytes));
+  // Node data cut short, or inner children all the way down (OctoMap's own reader would read
+  // past the end and build nodes for minutes): refused from the bytes, at once.
+  const std::string header = bytes.str().substr(0, bytes.str().find("\ndata\n") + 6);
+  EXPECT_NE(message([&] {
+              OccupiedVoxelsFromBinary(bytes.str().substr(0, bytes.str().size() - 1), 0.002, "cut");
+            }).find("ends inside the tree"),
+            std::string::npos);
+  EXPECT_NE(message([&] {
+              OccupiedVoxelsFromBinary(header + std::string(40, '\xff'), 0.002, "inner");
+            }).find("deepest level"),
+            std::string::npos);
   EXPECT_EQ(OccupiedVoxelsFromBinary(bytes.str(), 0.002, "one").occupied_centres.size(), 1u);
   EXPECT_NE(message([&] {
               OccupiedVoxelsFromBinary(bytes.str(), 0.003, "one");
