@@ -168,6 +168,28 @@ TEST(ScanCaptureMultiproc, KeepsEveryImageAndResumesWithoutCapturingAgain) {
           }
         },
         std::runtime_error);
+
+    // A calibration of another camera (640x480 where the cell's camera gives 320x240): the first
+    // capture stops the scan saying what to do, and nothing is added to the record or the disk.
+    sim::RenderDatasetOptions other_options = model_options;
+    other_options.width = 2 * kWidth;
+    other_options.height = 2 * kHeight;
+    const planner::CellView other_camera = ViewsAround(sim::MakeCell(other_options), 4)[0];
+    ScanRecord fresh;
+    const fs::path other_dir = dir.path() / "other-camera";
+    ScanCapture mismatched(client, other_dir, fresh, [] {});
+    try {
+      mismatched(other_camera);
+      ADD_FAILURE() << "a calibration of another camera must stop the scan";
+    } catch (const std::runtime_error& error) {
+      const std::string what = error.what();
+      EXPECT_NE(what.find("delivered 320x240 but the calibration's camera is 640x480"),
+                std::string::npos)
+          << what;
+      EXPECT_NE(what.find("load the calibration of this camera"), std::string::npos) << what;
+    }
+    EXPECT_TRUE(fresh.captures.empty());
+    EXPECT_FALSE(fs::exists(other_dir / "images"));
   } catch (const std::exception& error) {
     FAIL() << error.what() << "\n" << cell.LogTails();
   }
