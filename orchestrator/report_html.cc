@@ -7,6 +7,7 @@
 
 #include "core/util/file_io.h"
 #include "orchestrator/report_assets.h"
+#include "orchestrator/report_coverage.h"
 #include "orchestrator/report_encode.h"
 #include "orchestrator/report_inputs.h"
 #include "orchestrator/report_scene.h"
@@ -84,6 +85,7 @@ std::string ReportHtml(const fs::path& scan_dir) {
   html += StaticRenders(in);
   html += report::TimingsSection(in);
   html += report::ViewsSection(in);
+  html += report::CoverageSection(in);
   html += report::ClustersSection(in);
   html += report::CalibrationSection(in);
   html += report::PlannerSection(in);

@@ -72,6 +72,10 @@ ReportInputs LoadReportInputs(const fs::path& scan_dir) {
                [&](const fs::path& p) { in.cameras = camera::ReadCamerasJson(p); });
   ReadOptional(scan_dir, "calibration.yaml", &in.notes,
                [&](const fs::path& p) { in.calibration = calibration::LoadCalibration(p); });
+  if (fs::exists(scan_dir / "gt_mesh.ply")) {  // a real plant has none: no note then
+    ReadOptional(scan_dir, "gt_mesh.ply", &in.notes,
+                 [&](const fs::path& p) { in.ground_truth = geometry::ReadMesh(p); });
+  }
   return in;
 }
 

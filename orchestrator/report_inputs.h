@@ -26,7 +26,8 @@ struct ReportInputs {
   std::optional<size_t> cluster_points;        // points in model/clusters.ply
   std::vector<camera::NamedCamera> cameras;    // cameras.json (empty when absent)
   std::optional<calibration::CellCalibration> calibration;
-  std::vector<std::string> notes;  // optional inputs left out, and why
+  std::optional<geometry::Mesh> ground_truth;  // gt_mesh.ply: simulated scans only
+  std::vector<std::string> notes;              // optional inputs left out, and why
 };
 
 // Throws std::runtime_error naming the file when report.json or model/mesh.ply is missing or

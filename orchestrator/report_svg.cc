@@ -136,4 +136,45 @@ std::string BarChartSvg(const std::vector<std::pair<std::string, double>>& bars,
   return svg + "</svg>\n";
 }
 
+std::string LineChartSvg(const std::vector<double>& fractions, const std::string& x_label,
+                         const std::string& y_label, std::pair<double, double> marked) {
+  const int left = 48, top = 10, plot_w = 420, plot_h = 200, width = left + plot_w + 20,
+            height = top + plot_h + 40;
+  const double n = std::max<double>(1, static_cast<double>(fractions.size()));
+  const auto x_of = [&](double x) { return left + x / n * plot_w; };
+  const auto y_of = [&](double f) { return top + (1 - std::clamp(f, 0.0, 1.0)) * plot_h; };
+  std::string svg = fmt::format(
+      "<svg class=\"line-chart\" width=\"{0}\" height=\"{1}\" viewBox=\"0 0 {0} {1}\" "
+      "role=\"img\">\n",
+      width, height);
+  for (int percent = 0; percent <= 100; percent += 25) {
+    const double y = y_of(percent / 100.0);
+    svg += fmt::format(
+        "<line x1=\"{}\" y1=\"{:.1f}\" x2=\"{}\" y2=\"{:.1f}\" stroke=\"#ddd\"/>"
+        "<text x=\"{}\" y=\"{:.1f}\" font-size=\"11\" text-anchor=\"end\">{} %</text>\n",
+        left, y, left + plot_w, y, left - 4, y + 4, percent);
+  }
+  svg += fmt::format(
+      "<text x=\"{}\" y=\"{}\" font-size=\"12\" text-anchor=\"middle\">{} (1 .. {})</text>"
+      "<text x=\"12\" y=\"{}\" font-size=\"12\" text-anchor=\"middle\" "
+      "transform=\"rotate(-90 12 {})\">{}</text>\n",
+      left + plot_w / 2, top + plot_h + 30, EscapeHtml(x_label), fractions.size(), top + plot_h / 2,
+      top + plot_h / 2, EscapeHtml(y_label));
+  std::string points;
+  for (size_t i = 0; i < fractions.size(); ++i) {
+    points += fmt::format("{:.1f},{:.1f} ", x_of(static_cast<double>(i + 1)), y_of(fractions[i]));
+  }
+  svg +=
+      "<polyline fill=\"none\" stroke=\"#4a7fb5\" stroke-width=\"2\" points=\"" + points + "\"/>\n";
+  if (marked.first > 0) {
+    svg += fmt::format(
+        "<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"5\" fill=\"#c0504d\"/>"
+        "<text x=\"{:.1f}\" y=\"{:.1f}\" font-size=\"11\" text-anchor=\"end\">kept: {:.0f} "
+        "images, {:.1f} %</text>\n",
+        x_of(marked.first), y_of(marked.second), x_of(marked.first) - 8, y_of(marked.second) + 18,
+        marked.first, 100 * marked.second);
+  }
+  return svg + "</svg>\n";
+}
+
 }  // namespace avc::orchestrator::report

@@ -32,4 +32,9 @@ std::string MeshViewSvg(const geometry::Mesh& mesh,
 std::string BarChartSvg(const std::vector<std::pair<std::string, double>>& bars,
                         const std::string& unit);
 
+// A line of fractions (0..1) against 1, 2, ... n, with axes, 0-100 % ticks and axis labels; a
+// marked point (x, fraction) drawn as a dot when x > 0.
+std::string LineChartSvg(const std::vector<double>& fractions, const std::string& x_label,
+                         const std::string& y_label, std::pair<double, double> marked = {});
+
 }  // namespace avc::orchestrator::report

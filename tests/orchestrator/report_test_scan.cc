@@ -15,7 +15,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A camera at `eye` looking at the origin, z up.
+}  // namespace
+
 camera::NamedCamera LookingAtOrigin(const std::string& name, const Eigen::Vector3d& eye) {
   const Eigen::Vector3d forward = -eye.normalized();
   const Eigen::Vector3d right = forward.cross(Eigen::Vector3d::UnitZ()).normalized();
@@ -30,8 +31,6 @@ camera::NamedCamera LookingAtOrigin(const std::string& name, const Eigen::Vector
   cam.camera.T_cam_world = T_world_cam.inverse();
   return cam;
 }
-
-}  // namespace
 
 geometry::Mesh Tetrahedron() {
   geometry::Mesh mesh;
