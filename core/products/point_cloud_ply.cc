@@ -41,6 +41,13 @@ PlyType ToPlyType(int8_t datatype) {
 }  // namespace
 
 std::string PointCloudToPly(const avc::point_cloud_t& cloud) {
+  // Each byte of a record becomes at least one header line (padding included): an empty cloud
+  // claiming a 2 GB record would write billions of them (fuzz/lcm_messages, a 60-byte message).
+  constexpr int32_t kMaxPointStep = 4096;
+  if (cloud.point_step > kMaxPointStep) {
+    throw std::invalid_argument(fmt::format("point cloud '{}': {}-byte points (at most {})",
+                                            cloud.cloud_id, cloud.point_step, kMaxPointStep));
+  }
   if (cloud.num_points < 0 || cloud.point_step <= 0 ||
       static_cast<int64_t>(cloud.num_points) * cloud.point_step != cloud.data_size ||
       cloud.data_size != static_cast<int32_t>(cloud.data.size())) {

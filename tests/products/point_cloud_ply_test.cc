@@ -64,6 +64,18 @@ TEST(PointCloudPly, InconsistentCloudsAreRefused) {
   cloud = XyzRgbCloud();
   cloud.fields[2].count = 754974721;  // count x 4 bytes overflows int (found by fuzzing)
   EXPECT_THROW(PointCloudToPly(cloud), std::invalid_argument);
+  // No points but a 2 GB record: a header line per padding byte would never end (fuzzing).
+  cloud = XyzRgbCloud();
+  cloud.num_points = 0;
+  cloud.data_size = 0;
+  cloud.data.clear();
+  cloud.point_step = 2147483647;
+  try {
+    PointCloudToPly(cloud);
+    ADD_FAILURE() << "a 2 GB record must be refused";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_NE(std::string(error.what()).find("at most 4096"), std::string::npos) << error.what();
+  }
 }
 
 }  // namespace
