@@ -19,6 +19,11 @@ inline constexpr std::string_view kPartSeparator = "\n--8<--\n";
 
 std::string_view AsText(const uint8_t* data, size_t size);
 
+// The voxel-map targets' cap on expanded voxels: far below the reader's 64 million, which a
+// 1 kB tree of a few pruned nodes legitimately reaches (filling and sorting them takes 10 s
+// under the sanitizers, a "slow unit" but no bug); the cap's own refusal is a unit test.
+inline constexpr uint64_t kFuzzMaxVoxels = uint64_t{1} << 20;
+
 // This process's directory ($TMPDIR/avc-fuzz-<pid>-XXXXXX), created on first use and removed at
 // exit.
 const std::filesystem::path& TempDir();

@@ -18,6 +18,7 @@
 #include "services/builder/node_inputs.h"
 #include "services/surfacer/mesh_message.h"
 
+#include "fuzz/fuzz_support.h"
 #include "fuzz/lcm_types.inc"
 
 namespace avc {
@@ -62,7 +63,8 @@ void Interpret(const avc::voxel_map_t& message, const uint8_t* data, size_t size
   Archive<avc::voxel_map_t>(data, size);
   if (message.encoding != avc::voxel_map_t::ENCODING_OCTOMAP_BT) return;
   ppr::OccupiedVoxelsFromBinary(std::string(message.data.begin(), message.data.end()),
-                                message.resolution, "voxel map");
+                                message.resolution, "voxel map",
+                                {.max_voxels = fuzz::kFuzzMaxVoxels});
 }
 void Interpret(const avc::product_chunk_t& message, const uint8_t*, size_t) {  // every receiver
   products::Reassembler reassembler;

@@ -13,7 +13,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string bytes(avc::fuzz::AsText(data, size));
   for (const double voxel_size : {0.0, 0.002}) {
     try {
-      avc::ppr::OccupiedVoxelsFromBinary(bytes, voxel_size, "voxel map");
+      avc::ppr::OccupiedVoxelsFromBinary(bytes, voxel_size, "voxel map",
+                                         {.max_voxels = avc::fuzz::kFuzzMaxVoxels});
     } catch (const std::invalid_argument&) {  // the documented refusal
     }
   }
