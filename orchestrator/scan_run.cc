@@ -252,7 +252,7 @@ class ScanRun {
         },
         [&](const ppr::PlantProxy& proxy) {
           capture.SetPlantKeepOut(kinematics::PlantKeepOutFromVoxels(
-              proxy.NotFreeCentres(), proxy.voxel_size(), calibration_->T_base_table,
+              proxy.OccupiedCentres(), proxy.voxel_size(), calibration_->T_base_table,
               options_.capture.plant_keep_out_margin));
         });
     if (machine_.state() != ScanState::kPruneViews) Enter(ScanState::kPruneViews, "");

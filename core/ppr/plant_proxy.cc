@@ -229,18 +229,9 @@ VoxelCounts PlantProxy::Counts() const {
 }
 
 std::vector<Eigen::Vector3f> PlantProxy::OccupiedCentres() const {
-  return CentresWhere([](VoxelState state) { return state == VoxelState::kOccupied; });
-}
-
-std::vector<Eigen::Vector3f> PlantProxy::NotFreeCentres() const {
-  return CentresWhere([](VoxelState state) { return state != VoxelState::kFree; });
-}
-
-std::vector<Eigen::Vector3f> PlantProxy::CentresWhere(
-    const std::function<bool(VoxelState)>& wanted) const {
   std::vector<std::tuple<int, int, int>> voxels;  // (z, y, x): sorts in the documented order
   for (const ProxyCell& cell : cells_) {
-    if (!wanted(CellState(cell))) continue;
+    if (CellState(cell) != VoxelState::kOccupied) continue;
     const int n = 1 << cell.level;
     for (int z = cell.z * n; z < (cell.z + 1) * n; ++z) {
       for (int y = cell.y * n; y < (cell.y + 1) * n; ++y) {

@@ -28,7 +28,6 @@
 #include <Eigen/Geometry>
 #include <cstdint>
 #include <filesystem>
-#include <functional>
 #include <memory>
 #include <opencv2/core/mat.hpp>
 #include <string>
@@ -93,9 +92,6 @@ class PlantProxy {
   VoxelCounts Counts() const;
   // Centres of occupied voxels, sorted by voxel index (z, then y, then x).
   std::vector<Eigen::Vector3f> OccupiedCentres() const;
-  // Centres of the voxels not known to be free (occupied or unknown), in the same order: all the
-  // space the plant may fill.
-  std::vector<Eigen::Vector3f> NotFreeCentres() const;
   // Bounding box of the occupied voxels (whole voxels); empty when none is occupied.
   Eigen::AlignedBox3d OccupiedBounds() const;
   mvs::MvsBounds ToMvsBounds() const;
@@ -108,7 +104,6 @@ class PlantProxy {
   void WriteBinary(const std::filesystem::path& path) const;
 
  private:
-  std::vector<Eigen::Vector3f> CentresWhere(const std::function<bool(VoxelState)>& wanted) const;
   void Carve(const CarvingView& view);
   VoxelState CellState(const ProxyCell& cell) const;
   int MinPlantViews() const;
