@@ -3,6 +3,7 @@
 #include "bench/auth/auth_bench.h"
 #include "bench/bus/bus_bench.h"
 #include "bench/calibration/calibration_bench.h"
+#include "bench/chaos/chaos_bench.h"
 #include "bench/clustering/clustering_bench.h"
 #include "bench/devices/devices_bench.h"
 #include "bench/e2e/e2e_bench.h"
@@ -37,6 +38,11 @@ const std::vector<Benchmark>& AllBenchmarks() {
        "hand-eye (closed form, Ceres, OpenCV SHAH) and turntable axis (paper, closed form, Ceres) "
        "Monte-Carlo, and the calibration end to end in the simulated cell",
        RunCalibrationBenchmark},
+      {"chaos",
+       "seeded crashes during simulated scans: a SIGKILL of the simulator, a driver, the recorder "
+       "or avc scan at a random moment, then restart or resume; and cells scanning at once on one "
+       "network: every image once, the undisturbed scan's images and mesh byte for byte",
+       RunChaosBenchmark},
       {"clustering",
        "the paper's Table 2 replica: Algorithm 2 against k-means, iPDDP, dense and sparse "
        "spectral, PCL region growing on six labelled plant point sets",

@@ -6,6 +6,7 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <csignal>
 #include <deque>
 #include <fstream>
@@ -16,18 +17,46 @@
 namespace avc::bench {
 namespace fs = std::filesystem;
 
-int FreeTcpPort() {
+std::string LogTail(const fs::path& log, int lines) {
+  std::ifstream in(log);
+  std::deque<std::string> tail;
+  for (std::string line; std::getline(in, line);) {
+    tail.push_back(line);
+    if (static_cast<int>(tail.size()) > lines) tail.pop_front();
+  }
+  std::string out;
+  for (const std::string& line : tail) out += line + "\n";
+  return out;
+}
+
+namespace {
+
+bool CanListenOn(int port) {
   const int fd = socket(AF_INET, SOCK_STREAM, 0);
   if (fd < 0) throw std::runtime_error("cannot create a socket to find a free port");
   sockaddr_in address{};
   address.sin_family = AF_INET;
   address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  socklen_t length = sizeof(address);
-  const bool ok = bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof(address)) == 0 &&
-                  getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length) == 0;
+  address.sin_port = htons(static_cast<uint16_t>(port));
+  const bool ok = bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof(address)) == 0;
   close(fd);
-  if (!ok) throw std::runtime_error("cannot find a free TCP port on 127.0.0.1");
-  return ntohs(address.sin_port);
+  return ok;
+}
+
+}  // namespace
+
+int FreeTcpPort() {
+  // Below the kernel's ephemeral range (32768-60999 by default), so no outgoing connection (a
+  // driver dialling its device) takes the port before its server binds it. One cursor for the
+  // process keeps cells started at once apart; the pid spreads processes.
+  constexpr int kFirst = 20000, kCount = 12000;
+  static std::atomic<int> cursor{static_cast<int>(getpid() % kCount)};
+  for (int tries = 0; tries < kCount; ++tries) {
+    const int port = kFirst + cursor.fetch_add(1) % kCount;
+    if (CanListenOn(port)) return port;
+  }
+  throw std::runtime_error(
+      fmt::format("no free TCP port on 127.0.0.1 in {}-{}", kFirst, kFirst + kCount - 1));
 }
 
 CellProcessOptions LocalCellOptions(int port, const std::string& cell, double time_scale,
@@ -62,7 +91,11 @@ bus::BusOptions ClientBusOptions(const CellProcessOptions& options, const std::s
   return bus_options;
 }
 
-CellProcesses::CellProcesses(const CellProcessOptions& options) : work_dir_(options.work_dir) {
+CellProcesses::CellProcesses(const CellProcessOptions& options)
+    : work_dir_(options.work_dir),
+      lcm_url_(options.lcm_url),
+      bulk_url_(options.bulk_url),
+      cell_(options.cell) {
   fs::create_directories(work_dir_);
   key_ = auth::LoadOrGenerateCommandKey(work_dir_ / "cell.key");
   const std::string key_file = key_.file.string();
@@ -70,6 +103,12 @@ CellProcesses::CellProcesses(const CellProcessOptions& options) : work_dir_(opti
   const int rtde = FreeTcpPort(), primary = FreeTcpPort(), secondary = FreeTcpPort(),
             dashboard = FreeTcpPort(), camera = FreeTcpPort();
   const fs::path link_dir = work_dir_ / "sim";
+  if (options.record) {  // first, so it hears the others start
+    fs::create_directories(recordings_dir());
+    Start("avc-record", [this, avc] {
+      return std::vector<std::string>{avc, "record", "-o", NextRecording().string()};
+    });
+  }
   std::vector<std::string> sim = {avc,
                                   "sim",
                                   "cell",
@@ -101,30 +140,43 @@ CellProcesses::CellProcesses(const CellProcessOptions& options) : work_dir_(opti
                                   link_dir.string()};
   if (options.png) sim.push_back("--png");
   sim.insert(sim.end(), options.extra_sim_args.begin(), options.extra_sim_args.end());
-  Start("avc-sim", sim, options);
-  Start(
-      "avc-robot",
-      {avc, "robot", "--host", "127.0.0.1", "--rtde-port", std::to_string(rtde), "--secondary-port",
-       std::to_string(secondary), "--dashboard-port", std::to_string(dashboard), "--key", key_file},
-      options);
+  const auto fixed = [](std::vector<std::string> argv) {
+    return [argv = std::move(argv)] { return argv; };
+  };
+  Start("avc-sim", fixed(sim));
+  Start("avc-robot", fixed({avc, "robot", "--host", "127.0.0.1", "--rtde-port",
+                            std::to_string(rtde), "--secondary-port", std::to_string(secondary),
+                            "--dashboard-port", std::to_string(dashboard), "--key", key_file}));
   Start("avc-turntable",
-        {avc, "turntable", "--device", (link_dir / "lt360").string(), "--speed",
-         fmt::format("{}", options.table_speed_deg_s), "--key", key_file},
-        options);
-  Start("avc-camera",
-        {avc, "camera", "--port", fmt::format("ptpip:127.0.0.1:{}", camera), "--no-usb-watch"},
-        options);
+        fixed({avc, "turntable", "--device", (link_dir / "lt360").string(), "--speed",
+               fmt::format("{}", options.table_speed_deg_s), "--key", key_file}));
+  Start("avc-camera", fixed({avc, "camera", "--port", fmt::format("ptpip:127.0.0.1:{}", camera),
+                             "--no-usb-watch"}));
 }
 
-void CellProcesses::Start(const std::string& name, std::vector<std::string> argv,
-                          const CellProcessOptions& options) {
-  argv.insert(argv.end(), {"--lcm-url", options.lcm_url, "--bulk-url", options.bulk_url, "--cell",
-                           options.cell});
+void CellProcesses::Start(const std::string& name, std::function<std::vector<std::string>()> argv) {
+  const fs::path log = work_dir_ / (name + ".log");
+  launch::ChildProcess child = Spawn(log, argv());
+  processes_.push_back({name, log, std::move(argv), std::move(child)});
+}
+
+launch::ChildProcess CellProcesses::Spawn(const fs::path& log,
+                                          std::vector<std::string> argv) const {
   launch::SpawnSpec spec;
   spec.argv = std::move(argv);
-  spec.log_file = (work_dir_ / (name + ".log")).string();
+  spec.argv.insert(spec.argv.end(),
+                   {"--lcm-url", lcm_url_, "--bulk-url", bulk_url_, "--cell", cell_});
+  spec.log_file = log.string();
   spec.env["HOME"] = work_dir_.string();  // libgphoto2 keeps its settings under $HOME
-  processes_.push_back({name, spec.log_file, spec, launch::ChildProcess::Spawn(spec)});
+  return launch::ChildProcess::Spawn(spec);
+}
+
+// `avc record` never overwrites a log: each start takes the next free number.
+fs::path CellProcesses::NextRecording() const {
+  for (int n = 1;; ++n) {
+    const fs::path path = recordings_dir() / fmt::format("{}-{:03d}.lcmlog", cell_, n);
+    if (!fs::exists(path)) return path;
+  }
 }
 
 CellProcesses::~CellProcesses() {
@@ -140,7 +192,7 @@ void CellProcesses::KillAndRestart(const std::string& name) {
     if (process.name != name) continue;
     process.child.Signal(SIGKILL);
     process.child.WaitFor(std::chrono::milliseconds(5000));
-    process.child = launch::ChildProcess::Spawn(process.spec);
+    process.child = Spawn(process.log, process.argv());
     return;
   }
   throw std::invalid_argument("no cell process named " + name);
@@ -159,14 +211,8 @@ std::vector<std::string> CellProcesses::Exited() {
 std::string CellProcesses::LogTails(int lines) const {
   std::string out;
   for (const Process& process : processes_) {
-    std::ifstream in(process.log);
-    std::deque<std::string> tail;
-    for (std::string line; std::getline(in, line);) {
-      tail.push_back(line);
-      if (static_cast<int>(tail.size()) > lines) tail.pop_front();
-    }
-    out += fmt::format("--- {} ({})\n", process.name, process.log.string());
-    for (const std::string& line : tail) out += line + "\n";
+    out += fmt::format("--- {} ({})\n{}", process.name, process.log.string(),
+                       LogTail(process.log, lines));
   }
   return out;
 }

@@ -2,11 +2,13 @@
 
 // The simulated cell as the separate processes a lab runs: `avc sim cell` (all emulators) plus
 // the three drivers (`avc robot`, `avc turntable`, `avc camera`) pointed at it over the real
-// protocols, talking LCM on the given URLs. Used by `avc bench devices` and the end-to-end test.
-// Ports are picked free at start; logs land in work_dir. The drivers obey only commands signed
-// with the cell's key, work_dir/cell.key (made at the first start).
+// protocols, talking LCM on the given URLs, and optionally a recorder (`avc record`). Used by
+// `avc bench devices`, `avc bench chaos` and the end-to-end tests. Ports are picked free at start;
+// logs land in work_dir. The drivers obey only commands signed with the cell's key,
+// work_dir/cell.key (made at the first start).
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -31,6 +33,8 @@ struct CellProcessOptions {
   bool png = false;
   // More `avc sim cell` flags, e.g. {"--chessboard", "9x6", "--samples", "4"}.
   std::vector<std::string> extra_sim_args;
+  // Also run `avc record` for the cell ("avc-record"), into work_dir/recordings/.
+  bool record = false;
 };
 
 class CellProcesses {
@@ -43,9 +47,9 @@ class CellProcesses {
   CellProcesses(const CellProcesses&) = delete;
   CellProcesses& operator=(const CellProcesses&) = delete;
 
-  // SIGKILLs the named process ("avc-robot", "avc-turntable", "avc-camera", "avc-sim"), as a
-  // crash would, and starts it again the same way (its log goes on). Throws
-  // std::invalid_argument for an unknown name.
+  // SIGKILLs the named process ("avc-robot", "avc-turntable", "avc-camera", "avc-sim",
+  // "avc-record"), as a crash would, and starts it again the same way (its log goes on; a
+  // recorder starts a new recording). Throws std::invalid_argument for an unknown name.
   void KillAndRestart(const std::string& name);
 
   // Names of processes that exited (with how), empty while all run.
@@ -53,6 +57,8 @@ class CellProcesses {
   // The last lines of every log, for error messages.
   std::string LogTails(int lines = 15) const;
   std::filesystem::path truth_log() const;
+  // Where the recorder writes: one .lcmlog per start.
+  std::filesystem::path recordings_dir() const { return work_dir_ / "recordings"; }
   // The key the drivers check motion commands with: give it to the CellClient.
   const auth::CommandKey& key() const { return key_; }
 
@@ -60,13 +66,16 @@ class CellProcesses {
   struct Process {
     std::string name;
     std::filesystem::path log;
-    launch::SpawnSpec spec;
+    // The command line of each start: the recorder's names a new file every time.
+    std::function<std::vector<std::string>()> argv;
     launch::ChildProcess child;
   };
-  void Start(const std::string& name, std::vector<std::string> argv,
-             const CellProcessOptions& options);
+  void Start(const std::string& name, std::function<std::vector<std::string>()> argv);
+  launch::ChildProcess Spawn(const std::filesystem::path& log, std::vector<std::string> argv) const;
+  std::filesystem::path NextRecording() const;
 
   std::filesystem::path work_dir_;
+  std::string lcm_url_, bulk_url_, cell_;
   auth::CommandKey key_;
   std::vector<Process> processes_;
 };
@@ -85,7 +94,11 @@ CellProcessOptions CellOptionsOnBus(const bus::BusOptions& bus,
 // The bus options of a program that talks to that cell.
 bus::BusOptions ClientBusOptions(const CellProcessOptions& options, const std::string& source);
 
-// A TCP port on 127.0.0.1 nobody listens on right now (bound, read back, closed).
+// The last `lines` lines of a log file (empty if it cannot be read).
+std::string LogTail(const std::filesystem::path& log, int lines);
+
+// A TCP port on 127.0.0.1 nobody listens on right now (bound and closed), outside the ephemeral
+// range; successive calls in one process walk the range, so cells started at once get their own.
 int FreeTcpPort();
 
 }  // namespace avc::bench

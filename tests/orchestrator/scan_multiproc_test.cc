@@ -20,15 +20,14 @@
 #include <vector>
 
 #include "bench/devices/cell_processes.h"
+#include "bench/devices/scan_process.h"
 #include "core/auth/command_key.h"
 #include "core/bus/bus.h"
 #include "core/bus/bus_options.h"
 #include "core/bus/channels.h"
 #include "core/bus/event_loop.h"
-#include "core/calibration/cell/calibration_yaml.h"
 #include "core/launch/child_process.h"
 #include "orchestrator/scan_record.h"
-#include "sim/dataset/render_dataset.h"
 #include "sim/emulators/cell/simulated_cell.h"
 #include "tests/support/test_support.h"
 
@@ -40,55 +39,22 @@ using std::chrono::milliseconds;
 
 constexpr int kWidth = 1280, kHeight = 960;
 
-// The calibration a perfect `avc calibrate` would give in the nominal simulated cell.
+using bench::RecordedCaptures;
+using bench::WaitForCaptures;
+
 void WriteNominalCalibration(const fs::path& path) {
-  sim::RenderDatasetOptions options;
-  options.width = kWidth;
-  options.height = kHeight;
-  const sim::CellTruth cell = sim::MakeCell(options);
-  calibration::CellCalibration calibration;
-  calibration.intrinsics = cell.intrinsics;
-  calibration.T_flange_cam = cell.T_flange_cam;
-  calibration.T_base_table = cell.T_base_table;
-  calibration.dh = cell.dh;
-  calibration.note = "nominal simulated cell (test)";
-  calibration::SaveCalibration(calibration, path);
+  bench::WriteNominalCalibration(path, kWidth, kHeight);
 }
 
-class ScanProcess {
- public:
-  ScanProcess(const std::vector<std::string>& args, const bus::BusOptions& bus, const fs::path& key,
-              const fs::path& log) {
-    launch::SpawnSpec spec;
-    spec.argv = {testing::Executable("avc").string(), "scan"};
-    spec.argv.insert(spec.argv.end(), args.begin(), args.end());
-    spec.argv.insert(spec.argv.end(),
-                     {"--lcm-url", bus.control_url, "--bulk-url", bus.bulk_url, "--cell", bus.cell,
-                      "--max-views", "14", "--views-per-height", "6", "--key", key.string()});
-    spec.log_file = log.string();
-    child_.emplace(launch::ChildProcess::Spawn(spec));
-  }
-  launch::ChildProcess& child() { return *child_; }
-
- private:
-  std::optional<launch::ChildProcess> child_;
-};
-
-size_t RecordedCaptures(const fs::path& scan_dir) {
-  try {
-    return LoadScanRecord(scan_dir).captures.size();
-  } catch (const std::exception&) {
-    return 0;  // not written yet
-  }
-}
-
-// Polls scan.json (written atomically) until it records `count` captures.
-bool WaitForCaptures(const fs::path& scan_dir, size_t count, launch::ChildProcess& scan) {
-  for (int i = 0; i < 1200; ++i) {
-    if (RecordedCaptures(scan_dir) >= count) return true;
-    if (scan.WaitFor(milliseconds(100)).has_value()) return false;  // it ended first
-  }
-  return false;
+// `avc scan ARGS...` on the test's bus with the short planner settings.
+launch::ChildProcess StartScan(const std::vector<std::string>& args, const bus::BusOptions& bus,
+                               const fs::path& key, const fs::path& log) {
+  bench::ScanProcessOptions options;
+  options.avc_binary = testing::Executable("avc");
+  options.bus = bus;
+  options.key_file = key;
+  options.log = log;
+  return bench::StartScanProcess(args, options);
 }
 
 // The nominal simulated cell with every driver, small and fast, on the test's bus.
@@ -142,12 +108,12 @@ TEST(ScanMultiproc, PausedKilledAndResumedScanFinishesWithEveryImageOnce) {
   const fs::path log = dir.path() / "scan.log";
 
   {  // SIGTERM: paused, resumable.
-    ScanProcess scan({scan_dir.string(), "--calibration", calibration.string()}, bus_options,
-                     cell.key().file, log);
-    ASSERT_TRUE(WaitForCaptures(scan_dir, 3, scan.child()))
-        << testing::ReadFile(log) << cell.LogTails();
-    scan.child().Signal(SIGTERM);
-    const auto status = scan.child().WaitFor(milliseconds(30000));
+    launch::ChildProcess scan =
+        StartScan({scan_dir.string(), "--calibration", calibration.string()}, bus_options,
+                  cell.key().file, log);
+    ASSERT_TRUE(WaitForCaptures(scan_dir, 3, scan)) << testing::ReadFile(log) << cell.LogTails();
+    scan.Signal(SIGTERM);
+    const auto status = scan.WaitFor(milliseconds(30000));
     ASSERT_TRUE(status.has_value()) << "avc scan ignored SIGTERM\n" << testing::ReadFile(log);
     EXPECT_TRUE(WIFEXITED(*status) && WEXITSTATUS(*status) == 4)
         << launch::DescribeWaitStatus(*status) << "\n"
@@ -158,19 +124,20 @@ TEST(ScanMultiproc, PausedKilledAndResumedScanFinishesWithEveryImageOnce) {
     EXPECT_TRUE(IsWorkingState(*paused.interrupted));
   }
   {  // A new scan in the same directory is refused: it would mix two plants.
-    ScanProcess again({scan_dir.string(), "--calibration", calibration.string()}, bus_options,
-                      cell.key().file, dir.path() / "again.log");
-    const auto status = again.child().WaitFor(milliseconds(20000));
+    launch::ChildProcess again =
+        StartScan({scan_dir.string(), "--calibration", calibration.string()}, bus_options,
+                  cell.key().file, dir.path() / "again.log");
+    const auto status = again.WaitFor(milliseconds(20000));
     ASSERT_TRUE(status.has_value());
     EXPECT_TRUE(WIFEXITED(*status) && WEXITSTATUS(*status) == 1);
     EXPECT_NE(testing::ReadFile(dir.path() / "again.log").find("--resume"), std::string::npos);
   }
   {  // Resumed, then killed outright halfway.
-    ScanProcess scan({"--resume", scan_dir.string()}, bus_options, cell.key().file, log);
-    ASSERT_TRUE(WaitForCaptures(scan_dir, 8, scan.child()))
-        << testing::ReadFile(log) << cell.LogTails();
-    scan.child().Signal(SIGKILL);
-    ASSERT_TRUE(scan.child().WaitFor(milliseconds(10000)).has_value());
+    launch::ChildProcess scan =
+        StartScan({"--resume", scan_dir.string()}, bus_options, cell.key().file, log);
+    ASSERT_TRUE(WaitForCaptures(scan_dir, 8, scan)) << testing::ReadFile(log) << cell.LogTails();
+    scan.Signal(SIGKILL);
+    ASSERT_TRUE(scan.WaitFor(milliseconds(10000)).has_value());
   }
   std::vector<avc::orchestrator_state_t> states;
   {  // Resumed again: to the end, its state heard on the bus all along.
@@ -180,9 +147,10 @@ TEST(ScanMultiproc, PausedKilledAndResumedScanFinishesWithEveryImageOnce) {
     bus.Subscribe<avc::orchestrator_state_t>(channels::kOrchestratorState,
                                              [&](const avc::orchestrator_state_t& state,
                                                  const bus::RxInfo&) { states.push_back(state); });
-    ScanProcess scan({"--resume", scan_dir.string()}, bus_options, cell.key().file, log);
-    loop.RunUntil([&] { return scan.child().TryWait().has_value(); }, milliseconds(240000));
-    const auto status = scan.child().WaitFor(milliseconds(1000));
+    launch::ChildProcess scan =
+        StartScan({"--resume", scan_dir.string()}, bus_options, cell.key().file, log);
+    loop.RunUntil([&] { return scan.TryWait().has_value(); }, milliseconds(240000));
+    const auto status = scan.WaitFor(milliseconds(1000));
     ASSERT_TRUE(status.has_value()) << "scan did not finish\n" << testing::ReadFile(log);
     ASSERT_TRUE(WIFEXITED(*status) && WEXITSTATUS(*status) == 0)
         << launch::DescribeWaitStatus(*status) << "\n"
@@ -217,11 +185,11 @@ TEST(ScanMultiproc, DevicesThatNeverAnswerFaultTheScanWithTheirNames) {
   const fs::path calibration = dir.path() / "calibration.yaml";
   WriteNominalCalibration(calibration);
   const fs::path log = dir.path() / "scan.log";
-  ScanProcess scan(
-      {"--calibration", calibration.string(), scan_dir.string(), "--ready-timeout", "1"},
-      bus::ResolveBusOptions({}, "scan-nocell-test"),
-      auth::GenerateCommandKey(dir / "cell.key").file, log);
-  const auto status = scan.child().WaitFor(milliseconds(30000));
+  launch::ChildProcess scan =
+      StartScan({"--calibration", calibration.string(), scan_dir.string(), "--ready-timeout", "1"},
+                bus::ResolveBusOptions({}, "scan-nocell-test"),
+                auth::GenerateCommandKey(dir / "cell.key").file, log);
+  const auto status = scan.WaitFor(milliseconds(30000));
   ASSERT_TRUE(status.has_value()) << testing::ReadFile(log);
   EXPECT_TRUE(WIFEXITED(*status) && WEXITSTATUS(*status) == 3)
       << launch::DescribeWaitStatus(*status) << "\n"
@@ -233,9 +201,10 @@ TEST(ScanMultiproc, DevicesThatNeverAnswerFaultTheScanWithTheirNames) {
   }
   // Nothing was started: the record stays IDLE and a resume tries the devices again.
   EXPECT_EQ(LoadScanRecord(scan_dir).state, ScanState::kIdle);
-  ScanProcess again({"--resume", scan_dir.string(), "--ready-timeout", "1"},
-                    bus::ResolveBusOptions({}, "scan-nocell-test"), dir / "cell.key", log);
-  const auto again_status = again.child().WaitFor(milliseconds(30000));
+  launch::ChildProcess again =
+      StartScan({"--resume", scan_dir.string(), "--ready-timeout", "1"},
+                bus::ResolveBusOptions({}, "scan-nocell-test"), dir / "cell.key", log);
+  const auto again_status = again.WaitFor(milliseconds(30000));
   ASSERT_TRUE(again_status.has_value());
   EXPECT_TRUE(WIFEXITED(*again_status) && WEXITSTATUS(*again_status) == 3)
       << testing::ReadFile(log);
@@ -261,14 +230,13 @@ TEST(ScanMultiproc, DevicesKilledDuringTheScanAreRestartedAndTheScanFinishes) {
     std::vector<std::string> args = {scan_dir.string()};
     args.insert(args.begin(), runs == 0 ? "--calibration" : "--resume");
     if (runs == 0) args.insert(args.begin() + 1, calibration.string());
-    ScanProcess scan(args, bus_options, cell.key().file, log);
+    launch::ChildProcess scan = StartScan(args, bus_options, cell.key().file, log);
     ++runs;
-    while (next_kill < kills.size() &&
-           WaitForCaptures(scan_dir, kills[next_kill].first, scan.child())) {
+    while (next_kill < kills.size() && WaitForCaptures(scan_dir, kills[next_kill].first, scan)) {
       cell.KillAndRestart(kills[next_kill].second);
       ++next_kill;
     }
-    status = scan.child().WaitFor(milliseconds(240000));
+    status = scan.WaitFor(milliseconds(240000));
     ASSERT_TRUE(status.has_value()) << "scan did not finish\n" << testing::ReadFile(log);
     ASSERT_TRUE(WIFEXITED(*status)) << launch::DescribeWaitStatus(*status);
     if (WEXITSTATUS(*status) == 0) break;

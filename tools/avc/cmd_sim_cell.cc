@@ -70,7 +70,8 @@ void RegisterSimCell(CLI::App& sim, int* exit_code) {
       "The drivers connect to it as to real hardware: avc-robot to the UR5 ports, avc turntable\n"
       "to <link-dir>/lt360, avc camera to ptpip:127.0.0.1:<camera-port> (model \"PTP/IP "
       "Camera\").\n"
-      "Each capture renders the plant from the true camera pose; <link-dir>/truth.jsonl logs it.\n"
+      "Each capture renders the plant from the true camera pose; <link-dir>/truth.jsonl logs it\n"
+      "(appended to, so it spans restarts).\n"
       "Example: avc sim cell --plant strap --time-scale 4 --link-dir /tmp/avc-sim");
   AddSimSceneFlags(*command, args->scene);
   command->add_option("--time-scale", c.time_scale, "simulated seconds per real second")

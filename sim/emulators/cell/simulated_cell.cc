@@ -40,7 +40,8 @@ SimulatedCell::SimulatedCell(SimulatedCellOptions options) : options_(std::move(
     fs::remove(table_link_, ignored);
     fs::create_symlink(table_->device_path(), table_link_);
     const fs::path truth_path = options_.link_dir / "truth.jsonl";
-    truth_log_.open(truth_path, std::ios::trunc);
+    // Appended to, so a simulator restarted during a scan keeps the frames it rendered before.
+    truth_log_.open(truth_path, std::ios::app);
     if (!truth_log_) throw std::runtime_error("cannot write " + truth_path.string());
   }
   PtpIpCameraOptions camera_options = options_.camera;

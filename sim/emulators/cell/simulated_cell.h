@@ -40,7 +40,7 @@ struct SimulatedCellOptions {
   bool noise = false;     // exposure and pixel noise, seeded per frame
   uint64_t noise_seed = 1;
   // When set: a symlink <link_dir>/lt360 to the table's pty (a stable name for launch files) and
-  // <link_dir>/truth.jsonl, one line per captured frame with its true camera.
+  // <link_dir>/truth.jsonl, one line appended per captured frame with its true camera.
   std::filesystem::path link_dir;
 
   std::string Validate() const;
