@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <avc/capture_request_t.hpp>
 #include <avc/robot_state_t.hpp>
@@ -110,8 +111,20 @@ double CellClient::SendUntilDone(const std::string& id, const std::function<void
       break;
     }
   }
-  if (!loop_.RunUntil([&] { return final_acks_.count(id) != 0; }, timeout)) {
-    throw std::runtime_error(fmt::format("no answer to '{}' within {} ms", id, timeout.count()));
+  // A driver restarted while the command ran has forgotten it: re-sending every second until
+  // the final answer lets the new one take it up, where waiting would run into the timeout (a
+  // live driver answers a repeated id from memory and does nothing twice).
+  const int64_t deadline_us = sent_us + static_cast<int64_t>(timeout.count()) * 1000;
+  while (!loop_.RunUntil([&] { return final_acks_.count(id) != 0; },
+                         std::chrono::milliseconds(std::clamp<int64_t>(
+                             (deadline_us - MonotonicMicros()) / 1000, 0, 1000)))) {
+    if (loop_.quitting()) {  // SIGTERM: the caller pauses; a resume sends the command again
+      throw std::runtime_error(fmt::format("stopped before '{}' was answered", id));
+    }
+    if (MonotonicMicros() >= deadline_us) {
+      throw std::runtime_error(fmt::format("no answer to '{}' within {} ms", id, timeout.count()));
+    }
+    send();
   }
   const avc::ack_t& ack = final_acks_.at(id);
   if (ack.status == avc::ack_t::STATUS_REFUSED) {

@@ -4,7 +4,8 @@
 // orchestrator will do the same): a command, then its ack; a capture request, then the image
 // product. Every call runs the event loop until the answer comes and times it; a refusal, a
 // failure or a timeout throws with the service's reason. Lost datagrams are covered by
-// re-sending a request until it is acknowledged (a repeated request id never repeats work).
+// re-sending a request until it is answered at all, and then every second until it is done, so a
+// driver restarted meanwhile takes it up (a repeated request id never repeats work).
 // Request ids carry a per-client session tag: drivers answer a repeated id from memory, so a
 // restarted program counting from 1 again must not reuse the ids of its previous life.
 // Robot and turntable commands are signed with the cell's key (core/auth) when the client has
