@@ -4,23 +4,29 @@
 
 #include <octomap/OcTree.h>
 
+#include <algorithm>
+#include <avc/robot_command_t.hpp>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <lcm/lcm-cpp.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "core/auth/command_auth.h"
 #include "core/calibration/cell/calibration_yaml.h"
 #include "core/camera/camera_io.h"
 #include "core/geometry/mesh_io.h"
 #include "core/geometry/point_cloud_io.h"
+#include "core/kinematics/row_major_pose.h"
 #include "core/messages/camera_message.h"
 #include "core/messages/clusters_message.h"
 #include "core/messages/mvs_points_message.h"
 #include "core/messages/point_records.h"
 #include "core/products/chunking.h"
+#include "core/util/clock.h"
 #include "core/util/file_io.h"
 #include "core/util/sha256.h"
 #include "orchestrator/scan_record.h"
@@ -289,6 +295,41 @@ void FileSeeds(const fs::path& source) {
   Seed("lcm_log", "truncated.lcmlog", log_bytes.substr(0, log_bytes.size() - 7));
 }
 
+// Signed as the robot_command target's verifier expects (key 0x5a.., cell0, a fixed clock so the
+// corpus is the same every time): a joint move, a plant keep-out, an unsigned stop.
+void RobotCommandSeeds() {
+  const ManualClock clock(1'700'000'000'000'000);
+  auth::CommandKey key;
+  key.bytes.fill(0x5a);
+  auth::CommandSigner signer(key, "seed", "cell0", &clock);
+  avc::robot_command_t move{};
+  move.request_id = "move-1";
+  move.kind = avc::robot_command_t::KIND_MOVE_JOINTS;
+  const double q[6] = {0.6, -1.3, 1.5, -1.8, -1.5, 0.2};
+  std::copy(std::begin(q), std::end(q), move.q);
+  move.speed = 0.5;
+  move.acceleration = 0.8;
+  signer.Sign(move, "cell0/ROBOT_COMMAND");
+  Seed("robot_command", "move_joints", Encode(move));
+
+  avc::robot_command_t keep_out{};
+  keep_out.request_id = "keep-out-1";
+  keep_out.kind = avc::robot_command_t::KIND_SET_PLANT_KEEP_OUT;
+  kinematics::RowMajorFromIsometry(Eigen::Isometry3d(Eigen::Translation3d(0.55, 0, -0.2)),
+                                   keep_out.T_base_table);
+  keep_out.keep_out_z0 = -0.02;
+  keep_out.keep_out_slab = 0.02;
+  keep_out.keep_out_radius = {0.05, 0.12, 0.2, 0.18, 0.1};
+  keep_out.keep_out_slabs = static_cast<int16_t>(keep_out.keep_out_radius.size());
+  signer.Sign(keep_out, "cell0/ROBOT_COMMAND");
+  Seed("robot_command", "plant_keep_out", Encode(keep_out));
+
+  avc::robot_command_t stop{};
+  stop.request_id = "stop-1";
+  stop.kind = avc::robot_command_t::KIND_STOP;
+  Seed("robot_command", "unsigned_stop", Encode(stop));
+}
+
 }  // namespace
 }  // namespace avc::fuzz
 
@@ -302,5 +343,6 @@ int main(int argc, char** argv) {
   avc::fuzz::MessageSeeds();
   avc::fuzz::ChunkSeeds();
   avc::fuzz::FileSeeds(argv[2]);
+  avc::fuzz::RobotCommandSeeds();
   return 0;
 }

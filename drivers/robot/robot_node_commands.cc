@@ -10,6 +10,7 @@
 #include "core/bus/channels.h"
 #include "core/kinematics/row_major_pose.h"
 #include "core/util/log.h"
+#include "drivers/robot/plant_keep_out_command.h"
 #include "drivers/robot/robot_node.h"
 #include "drivers/robot/urscript.h"
 
@@ -107,11 +108,7 @@ void RobotNode::Stop(const Command& command) {
 }
 
 std::string RobotNode::SetPlantKeepOut(const Command& command) {
-  kinematics::PlantKeepOut keep_out;
-  keep_out.T_base_table = IsometryFromRowMajor(command.T_base_table);
-  keep_out.z0_m = command.keep_out_z0;
-  keep_out.slab_m = command.keep_out_slab;
-  keep_out.radius_m = command.keep_out_radius;
+  kinematics::PlantKeepOut keep_out = PlantKeepOutOf(command);
   if (keep_out.empty()) {
     config_.envelope.plant_keep_out = {};
     log::Info("{}: plant keep-out cleared by '{}'", config_.service, command.request_id);
