@@ -158,6 +158,12 @@ std::string TurntableNode::Validate(const avc::turntable_command_t& command) con
           std::abs(command.angle) > 2 * std::numbers::pi) {
         return fmt::format("step of {} rad exceeds one turn", command.angle);
       }
+      // A goto is taken modulo one turn, but only after rounding to tenths of a degree in an
+      // int: an angle of 1e20 rad would overflow there and land anywhere.
+      if (command.kind == avc::turntable_command_t::KIND_GOTO &&
+          std::abs(command.angle) > 4 * std::numbers::pi) {
+        return fmt::format("goto {} rad is beyond two turns either way", command.angle);
+      }
       break;
     case avc::turntable_command_t::KIND_HOME:
     case avc::turntable_command_t::KIND_STOP:

@@ -166,6 +166,7 @@ TEST(TurntableNode, BadInputIsRefusedWithAReason) {
   h.Send("kind", 9);
   h.Send("speed", avc::turntable_command_t::KIND_GOTO, 1.0, -1);
   h.Send("big", avc::turntable_command_t::KIND_STEP, 7.0);
+  h.Send("far", avc::turntable_command_t::KIND_GOTO, 1e20);
   h.Send("", avc::turntable_command_t::KIND_HOME);
   ASSERT_TRUE(h.WaitAck("", avc::ack_t::STATUS_REFUSED));
   const std::vector<std::pair<std::string, std::string>> expected = {
@@ -173,6 +174,7 @@ TEST(TurntableNode, BadInputIsRefusedWithAReason) {
       {"kind", "unknown command kind 9"},
       {"speed", "speed must be >= 0"},
       {"big", "exceeds one turn"},
+      {"far", "beyond two turns"},
       {"", "empty request_id"}};
   for (const auto& [id, reason] : expected) {
     const auto acks = h.AcksFor(id);
