@@ -10,8 +10,6 @@
 
 #include "core/calibration/cell/calibration_yaml.h"
 #include "core/camera/camera_io.h"
-#include "core/dataset/dataset_reader.h"
-#include "core/geometry/mesh_io.h"
 #include "core/kinematics/plant_keep_out.h"
 #include "core/kinematics/row_major_pose.h"
 #include "core/traits/traits_writer.h"
@@ -19,12 +17,7 @@
 #include "core/util/file_io.h"
 #include "orchestrator/report_html.h"
 #include "orchestrator/scan_processing.h"
-#include "services/builder/build_report.h"
-#include "services/builder/reconstruction_output.h"
-#include "services/clusterer/cluster_folder.h"
-#include "services/clusterer/clusters_ply.h"
 #include "services/planner/calibrated_cell.h"
-#include "services/surfacer/surface_clusters.h"
 
 namespace avc::orchestrator {
 namespace {

@@ -39,7 +39,6 @@ CellClient::CellClient(bus::Bus& bus, bus::EventLoop& loop, std::string name,
   if (key) signer_.emplace(std::move(*key), bus_.options().source, bus_.cell());
   subscriptions_.push_back(
       bus_.Subscribe<avc::ack_t>(channels::kAck, [this](const avc::ack_t& ack, const bus::RxInfo&) {
-        heard_.insert(ack.request_id);
         if (ack.status != avc::ack_t::STATUS_ACCEPTED) final_acks_[ack.request_id] = ack;
       }));
   subscriptions_.push_back(bus_.Subscribe<avc::heartbeat_t>(
@@ -105,16 +104,11 @@ std::string CellClient::NextId(const std::string& what) {
 double CellClient::SendUntilDone(const std::string& id, const std::function<void()>& send,
                                  std::chrono::milliseconds timeout) {
   const int64_t sent_us = MonotonicMicros();
-  for (int attempt = 0; attempt < 5; ++attempt) {
-    send();
-    if (loop_.RunUntil([&] { return heard_.count(id) != 0; }, std::chrono::milliseconds(1000))) {
-      break;
-    }
-  }
-  // A driver restarted while the command ran has forgotten it: re-sending every second until
-  // the final answer lets the new one take it up, where waiting would run into the timeout (a
-  // live driver answers a repeated id from memory and does nothing twice).
+  // Sent again every second until the final answer: that covers a lost datagram, and a driver
+  // restarted while the command ran, which has forgotten it and takes it up (a live driver
+  // answers a repeated id from memory and does nothing twice).
   const int64_t deadline_us = sent_us + static_cast<int64_t>(timeout.count()) * 1000;
+  send();
   while (!loop_.RunUntil([&] { return final_acks_.count(id) != 0; },
                          std::chrono::milliseconds(std::clamp<int64_t>(
                              (deadline_us - MonotonicMicros()) / 1000, 0, 1000)))) {

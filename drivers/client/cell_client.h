@@ -3,9 +3,9 @@
 // Drives a cell over the bus from one program (the calibrator, benchmarks, tests; the
 // orchestrator will do the same): a command, then its ack; a capture request, then the image
 // product. Every call runs the event loop until the answer comes and times it; a refusal, a
-// failure or a timeout throws with the service's reason. Lost datagrams are covered by
-// re-sending a request until it is answered at all, and then every second until it is done, so a
-// driver restarted meanwhile takes it up (a repeated request id never repeats work).
+// failure or a timeout throws with the service's reason. A request is re-sent every second until
+// it is done: that covers lost datagrams and a driver restarted meanwhile (a repeated request id
+// never repeats work).
 // Request ids carry a per-client session tag: drivers answer a repeated id from memory, so a
 // restarted program counting from 1 again must not reuse the ids of its previous life.
 // Robot and turntable commands are signed with the cell's key (core/auth) when the client has
@@ -22,7 +22,6 @@
 #include <map>
 #include <memory>
 #include <optional>
-#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -107,7 +106,6 @@ class CellClient {
   std::unique_ptr<products::ProductReceiver> receiver_;
   std::string id_prefix_;                         // name-session-
   std::map<std::string, avc::ack_t> final_acks_;  // by request id: DONE, FAILED or REFUSED
-  std::set<std::string> heard_;                   // request ids with any ack
   std::map<std::string, avc::heartbeat_t> health_;
   std::map<std::string, std::pair<products::Product, int64_t>> products_;  // by name; rx time
   kinematics::JointVector last_joints_ = kinematics::JointVector::Zero();

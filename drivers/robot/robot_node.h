@@ -118,8 +118,8 @@ class RobotNode {
   std::string StartMotion(const avc::robot_command_t& command);
   std::string RunDashboard(const avc::robot_command_t& command);
   void Stop(const avc::robot_command_t& command);
-  // Sets (radius > 0) or clears (radius 0) the plant's keep-out cylinder; the reason when the
-  // values are unusable (nothing changes then).
+  // Sets the plant's keep-out from the command's slabs, or clears it when there are none; the
+  // reason when the values are unusable (nothing changes then).
   std::string SetPlantKeepOut(const avc::robot_command_t& command);
   void Finish(int8_t status, std::string reason);  // by value: reasons often come from active_
   void PublishState(const RobotState& state);
