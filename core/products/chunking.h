@@ -28,7 +28,7 @@ std::vector<avc::product_chunk_t> SplitIntoChunks(const Product& product, size_t
 class Reassembler {
  public:
   enum class Status {
-    kIncomplete,  // chunk stored, more to come (missing lists what is still needed)
+    kIncomplete,  // chunk stored, more to come (Missing() lists what is still needed)
     kComplete,    // all chunks arrived and sha256 matched: product is set
     kDuplicate,   // the product was already completed earlier: acknowledge again, deliver nothing
     kCorrupt,     // all chunks arrived but sha256 differs: the partial data was dropped
@@ -37,7 +37,6 @@ class Reassembler {
   struct Outcome {
     Status status = Status::kInvalid;
     std::optional<Product> product;
-    std::vector<int32_t> missing;
     std::string error;
   };
 
@@ -45,7 +44,8 @@ class Reassembler {
   explicit Reassembler(size_t remember_completed = 8192, size_t max_pending_bytes = 1ull << 30);
 
   Outcome Add(const avc::product_chunk_t& chunk);
-  // Chunk indices not yet received for a pending product (empty if unknown or complete).
+  // Chunk indices not yet received for a pending product (empty if unknown or complete). Linear
+  // in the product's chunk count, so a receiver asks only when it acknowledges, not per chunk.
   std::vector<int32_t> Missing(const std::string& product_id) const;
   bool IsCompleted(const std::string& product_id) const;
   // Forgets that a product was completed, so a retransmission delivers it again (used when the

@@ -35,7 +35,8 @@ void ProductReceiver::OnChunk(const avc::product_chunk_t& chunk, const bus::RxIn
       // Report gaps once per transmission round (at its last chunk) and on every retransmitted
       // chunk, so the producer resends only what is missing without an ack per chunk.
       if (chunk.chunk_index == chunk.chunk_count - 1 || chunk.attempt > 0) {
-        Ack(chunk.product_id, avc::product_ack_t::STATUS_PARTIAL, outcome.missing);
+        Ack(chunk.product_id, avc::product_ack_t::STATUS_PARTIAL,
+            reassembler_.Missing(chunk.product_id));
       }
       return;
     case Reassembler::Status::kDuplicate:

@@ -58,7 +58,7 @@ TEST(Reassembler, OutOfOrderChunksGiveTheProductOnce) {
   for (size_t i = 0; i + 1 < chunks.size(); ++i) {
     const auto outcome = reassembler.Add(chunks[i]);
     EXPECT_EQ(outcome.status, Reassembler::Status::kIncomplete);
-    EXPECT_EQ(outcome.missing.size(), chunks.size() - i - 1);
+    EXPECT_EQ(reassembler.Missing(product.product_id).size(), chunks.size() - i - 1);
   }
   const auto done = reassembler.Add(chunks.back());
   ASSERT_EQ(done.status, Reassembler::Status::kComplete);
@@ -77,7 +77,7 @@ TEST(Reassembler, DuplicateChunksWhileIncompleteAreHarmless) {
   reassembler.Add(chunks[0]);
   const auto again = reassembler.Add(chunks[0]);
   EXPECT_EQ(again.status, Reassembler::Status::kIncomplete);
-  EXPECT_EQ(again.missing.front(), 1);
+  EXPECT_EQ(reassembler.Missing(product.product_id).front(), 1);
   for (size_t i = 1; i < chunks.size(); ++i) reassembler.Add(chunks[i]);
   EXPECT_TRUE(reassembler.IsCompleted(product.product_id));
 }
@@ -121,6 +121,9 @@ TEST(Reassembler, SelfContradictingChunksAreRejectedWithReasons) {
   c = chunks[0];
   c.product_id.clear();
   expect_invalid(c, "empty product id");
+  c = chunks[0];
+  c.chunk_count = static_cast<int32_t>(c.total_size) + 1;
+  expect_invalid(c, "chunks for a");
   reassembler.Add(chunks[0]);
   c = chunks[1];
   c.total_size += 10;
