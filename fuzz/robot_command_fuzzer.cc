@@ -12,8 +12,8 @@
 #include "core/bus/decode.h"
 #include "core/kinematics/dh_parameters.h"
 #include "core/kinematics/row_major_pose.h"
+#include "core/kinematics/safety_envelope.h"
 #include "drivers/robot/plant_keep_out_command.h"
-#include "drivers/robot/safety_envelope.h"
 
 #include "fuzz/fuzz_support.h"
 
@@ -32,16 +32,18 @@ avc::auth::CommandVerifier& Verifier() {
   return verifier;
 }
 
-void CheckMotion(const avc::robot::SafetyEnvelope& envelope, const avc::robot_command_t& command) {
+void CheckMotion(const avc::kinematics::SafetyEnvelope& envelope,
+                 const avc::robot_command_t& command) {
   const avc::kinematics::DhParameters dh = avc::kinematics::NominalUr5();
   avc::kinematics::JointVector current;
   current << 0.2, -1.4, 1.6, -1.8, -1.5, 0.1;
   avc::kinematics::JointVector target;
   for (int i = 0; i < 6; ++i) target[i] = command.q[i];
-  avc::robot::CheckJointMove(envelope, dh, current, target, command.speed, command.acceleration);
-  avc::robot::CheckLinearMove(envelope, dh, current,
-                              avc::kinematics::IsometryFromRowMajor(command.T_base_flange),
-                              command.speed, command.acceleration);
+  avc::kinematics::CheckJointMove(envelope, dh, current, target, command.speed,
+                                  command.acceleration);
+  avc::kinematics::CheckLinearMove(envelope, dh, current,
+                                   avc::kinematics::IsometryFromRowMajor(command.T_base_flange),
+                                   command.speed, command.acceleration);
 }
 
 }  // namespace
@@ -50,7 +52,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   avc::robot_command_t command;
   if (!avc::bus::DecodeMessage(data, size, &command)) return 0;  // refused as the bus refuses
   Verifier().Check(command, command.kind == avc::robot_command_t::KIND_STOP);
-  avc::robot::SafetyEnvelope envelope;
+  avc::kinematics::SafetyEnvelope envelope;
   envelope.table_z_base_m = -0.2;
   CheckMotion(envelope, command);
   const avc::kinematics::PlantKeepOut keep_out = avc::robot::PlantKeepOutOf(command);

@@ -49,7 +49,10 @@ std::string DemoLaunchFile(const DemoCellOptions& options, const fs::path& key_f
                         Quoted(name), Quoted(avc), Array(args));
   };
   process("sim", sim_args);
-  process("robot", {"robot", "--host", "127.0.0.1", "--key", key_file.string()});
+  std::vector<std::string> robot_args = {"robot", "--host", "127.0.0.1", "--key",
+                                         key_file.string()};
+  robot_args.insert(robot_args.end(), options.robot_args.begin(), options.robot_args.end());
+  process("robot", robot_args);
   process("turntable", {"turntable", "--device", link_dir + "/lt360", "--key", key_file.string()});
   process("camera", {"camera", "--port", "ptpip:127.0.0.1:15740", "--no-usb-watch"});
   if (!options.record_to.empty())

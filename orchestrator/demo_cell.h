@@ -24,7 +24,9 @@ struct DemoCellOptions {
   std::filesystem::path avc_binary;   // the `avc` executable
   std::filesystem::path work_dir;     // launch file, logs, the emulator's pty link
   std::vector<std::string> sim_args;  // after `avc sim cell`, e.g. {"--plant", "broadleaf"}
-  std::filesystem::path record_to;    // an LCM log of everything on the bus; empty: none
+  // after `avc robot --host ... --key ...`, e.g. the envelope (sim::RobotEnvelopeArguments)
+  std::vector<std::string> robot_args;
+  std::filesystem::path record_to;  // an LCM log of everything on the bus; empty: none
   bus::BusOptions bus;
 };
 

@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "core/launch/find_program.h"
+#include "sim/cell/cell_fixtures.h"
 
 namespace avc::bench {
 namespace fs = std::filesystem;
@@ -144,9 +145,22 @@ CellProcesses::CellProcesses(const CellProcessOptions& options)
     return [argv = std::move(argv)] { return argv; };
   };
   Start("avc-sim", fixed(sim));
-  Start("avc-robot", fixed({avc, "robot", "--host", "127.0.0.1", "--rtde-port",
-                            std::to_string(rtde), "--secondary-port", std::to_string(secondary),
-                            "--dashboard-port", std::to_string(dashboard), "--key", key_file}));
+  // The bench and turntable as the lab measured them: every move is checked against them.
+  std::vector<std::string> robot = {avc,
+                                    "robot",
+                                    "--host",
+                                    "127.0.0.1",
+                                    "--rtde-port",
+                                    std::to_string(rtde),
+                                    "--secondary-port",
+                                    std::to_string(secondary),
+                                    "--dashboard-port",
+                                    std::to_string(dashboard),
+                                    "--key",
+                                    key_file};
+  const std::vector<std::string> envelope = sim::RobotEnvelopeArguments(sim::NominalCellEnvelope());
+  robot.insert(robot.end(), envelope.begin(), envelope.end());
+  Start("avc-robot", fixed(robot));
   Start("avc-turntable",
         fixed({avc, "turntable", "--device", (link_dir / "lt360").string(), "--speed",
                fmt::format("{}", options.table_speed_deg_s), "--key", key_file}));

@@ -15,6 +15,7 @@ launch::ChildProcess StartScanProcess(const std::vector<std::string>& args,
   spec.argv.insert(spec.argv.end(), {"--lcm-url", options.bus.control_url, "--bulk-url",
                                      options.bus.bulk_url, "--cell", options.bus.cell});
   spec.argv.insert(spec.argv.end(), options.planner_args.begin(), options.planner_args.end());
+  spec.argv.insert(spec.argv.end(), options.envelope_args.begin(), options.envelope_args.end());
   spec.argv.insert(spec.argv.end(), {"--key", options.key_file.string()});
   spec.log_file = options.log.string();
   return launch::ChildProcess::Spawn(spec);

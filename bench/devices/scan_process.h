@@ -11,6 +11,7 @@
 
 #include "core/bus/bus_options.h"
 #include "core/launch/child_process.h"
+#include "sim/cell/cell_fixtures.h"
 
 namespace avc::bench {
 
@@ -21,6 +22,8 @@ struct ScanProcessOptions {
   std::filesystem::path log;         // stdout and stderr appended here
   // A short scan: the 3 x 6 orbit's first views and a few next-best ones.
   std::vector<std::string> planner_args = {"--max-views", "14", "--views-per-height", "6"};
+  // The fixed envelope the cell's avc-robot enforces (CellProcesses), for the planner.
+  std::vector<std::string> envelope_args = sim::RobotEnvelopeArguments(sim::NominalCellEnvelope());
 };
 
 // Starts `avc scan ARGS...` on the options' bus, with its planner arguments and key.

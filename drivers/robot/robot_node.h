@@ -25,10 +25,10 @@
 #include "core/bus/event_loop.h"
 #include "core/bus/heartbeat.h"
 #include "core/kinematics/dh_parameters.h"
+#include "core/kinematics/safety_envelope.h"
 #include "drivers/robot/controller_link.h"
 #include "drivers/robot/heartbeat_watchdog.h"
 #include "drivers/robot/motion_monitor.h"
-#include "drivers/robot/safety_envelope.h"
 
 namespace avc::robot {
 
@@ -44,7 +44,7 @@ struct RobotNodeConfig {
   Milliseconds reconnect_max{5000};
   // Nominal arm for envelope checks (planning only; reported poses come from the controller).
   kinematics::DhParameters dh = kinematics::NominalUr5();
-  SafetyEnvelope envelope;
+  kinematics::SafetyEnvelope envelope;
   double default_joint_speed = 0.5;          // rad/s, when a command says 0
   double default_joint_acceleration = 1.0;   // rad/s^2
   double default_linear_speed = 0.1;         // m/s

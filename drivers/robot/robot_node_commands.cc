@@ -19,6 +19,7 @@ namespace {
 
 using Command = avc::robot_command_t;
 using kinematics::IsometryFromRowMajor;
+using kinematics::JointVector;
 using kinematics::RowMajorFromIsometry;
 using Clock = std::chrono::steady_clock;
 
@@ -156,7 +157,8 @@ std::string RobotNode::StartMotion(const Command& command) {
   std::optional<MotionMonitor> monitor;
   if (joints) {
     const JointVector target = Eigen::Map<const JointVector>(command.q);
-    refusal = CheckJointMove(config_.envelope, config_.dh, current, target, speed, acceleration);
+    refusal = kinematics::CheckJointMove(config_.envelope, config_.dh, current, target, speed,
+                                         acceleration);
     if (refusal.empty()) {
       const Joints q = {target[0], target[1], target[2], target[3], target[4], target[5]};
       program = MoveJProgram(q, acceleration, speed);
@@ -164,7 +166,8 @@ std::string RobotNode::StartMotion(const Command& command) {
     }
   } else {
     const Eigen::Isometry3d target = IsometryFromRowMajor(command.T_base_flange);
-    refusal = CheckLinearMove(config_.envelope, config_.dh, current, target, speed, acceleration);
+    refusal = kinematics::CheckLinearMove(config_.envelope, config_.dh, current, target, speed,
+                                          acceleration);
     if (refusal.empty()) {
       const PoseVector pose = VectorFromPose(target);
       program = MoveLProgram(pose, acceleration, speed);

@@ -8,6 +8,7 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "core/kinematics/plant_keep_out.h"
 #include "core/ppr/proxy_bounds.h"
 #include "services/planner/framing.h"
 #include "services/planner/redundant_views.h"
@@ -44,6 +45,17 @@ struct Run {
   std::vector<double> distances;  // Phase 1's per height
   std::function<void(ActiveVisionStage)> stage;
   const ProxyFunction& proxy_changed;
+  ReachOptions reach;  // options.reach with the plant keep-out of the current proxy
+
+  // The envelope's plant keep-out follows the proxy, as avc-robot's does during a scan.
+  void ProxyChanged() {
+    if (reach.envelope) {
+      reach.envelope->plant_keep_out = kinematics::PlantKeepOutFromVoxels(
+          result.proxy->OccupiedCentres(), result.proxy->voxel_size(), cell.T_base_table,
+          reach.plant_keep_out_margin);
+    }
+    if (proxy_changed) proxy_changed(*result.proxy);
+  }
 
   // Captures `view` and records it; false when the capture failed.
   bool Take(PlannedView planned) {
@@ -57,7 +69,7 @@ struct Run {
     joints = planned.view.joints;
     if (result.proxy) {
       result.proxy->AddView(planned.view.camera, *mask);
-      if (proxy_changed) proxy_changed(*result.proxy);
+      ProxyChanged();
     }
     masks.push_back(std::move(*mask));
     result.views.push_back(std::move(planned));
@@ -79,10 +91,11 @@ struct Run {
         [&](double distance,
             const Eigen::Vector3d& aim) -> std::optional<std::pair<CellView, cv::Mat>> {
           const auto view = RealiseView(cell, EyeAt(aim, distance, elevation, first_azimuth), aim,
-                                        {}, joints, options.reach);
+                                        {}, joints, reach);
           if (!view) return std::nullopt;
           auto mask = capture(*view);
           if (!mask) return std::nullopt;
+          joints = view->joints;  // the arm went there for the frame
           return std::pair{*view, std::move(*mask)};
         });
     if (!framing.note.empty()) result.notes.push_back(framing.note);
@@ -97,7 +110,7 @@ struct Run {
       std::optional<CellView> view;
       for (double scale = 1.0; !view && scale > 0.6; scale -= 0.1) {
         view = RealiseView(cell, EyeAt(framing.aim, scale * framing.distance, elevation, azimuth),
-                           framing.aim, keep_out, joints, options.reach);
+                           framing.aim, keep_out, joints, reach);
       }
       if (!view) {
         result.notes.push_back(fmt::format(
@@ -122,7 +135,7 @@ struct Run {
     }
     result.proxy.emplace(ppr::BoundsFromViews(cameras, masks), options.proxy);
     for (size_t i = 0; i < cameras.size(); ++i) result.proxy->AddView(cameras[i], masks[i]);
-    if (proxy_changed) proxy_changed(*result.proxy);
+    ProxyChanged();
   }
 
   // Views in parallel: each is independent, and the tree is built before (tree() is lazy).
@@ -172,7 +185,7 @@ struct Run {
           return static_cast<double>(seen);
         };
         const SphereSearchResult found =
-            SearchViewSphere(cell, *result.proxy, patches[p], search, joints, options.reach,
+            SearchViewSphere(cell, *result.proxy, patches[p], search, joints, reach,
                              options.visibility, options.rank_candidates ? rank : ViewRank());
         result.iteration_seconds.push_back(
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
@@ -243,7 +256,8 @@ ActiveVisionResult RunActiveVision(const sim::CellTruth& cell, const CaptureFunc
   const auto stage = [&](ActiveVisionStage next) {
     if (on_stage) on_stage(next);
   };
-  Run run{cell, capture, options, {}, {}, sim::StartJoints(cell), {}, stage, on_proxy};
+  Run run{cell, capture, options,  {},           {}, sim::StartJoints(cell),
+          {},   stage,   on_proxy, options.reach};
   stage(ActiveVisionStage::kFrame);
   for (int level = 0; level < options.levels; ++level) run.InitialLevel(level);
   stage(ActiveVisionStage::kActiveVision);

@@ -20,6 +20,10 @@ double ExteriorDistance(const Eigen::AlignedBox3d& box, const Eigen::Vector3d& p
 
 }  // namespace
 
+kinematics::SafetyEnvelope PlanningEnvelope(const kinematics::SafetyEnvelope& driver) {
+  return kinematics::WithMargin(driver, 0.005);
+}
+
 std::optional<CellView> RealiseView(const sim::CellTruth& cell, const Eigen::Vector3d& eye_world,
                                     const Eigen::Vector3d& target_world,
                                     const Eigen::AlignedBox3d& keep_out,
@@ -44,6 +48,13 @@ std::optional<CellView> RealiseView(const sim::CellTruth& cell, const Eigen::Vec
     const auto joints = sim::JointsLookingAt(cell, T_table_world * eye_world,
                                              T_table_world * target_world, current);
     if (!joints) continue;
+    if (options.envelope &&
+        !kinematics::CheckJointMove(*options.envelope, cell.dh, current, *joints,
+                                    options.envelope->max_joint_speed_rad_s,
+                                    options.envelope->max_joint_acceleration_rad_s2)
+             .empty()) {
+      continue;
+    }
     CellView view;
     view.turntable_angle = angle;
     view.joints = *joints;

@@ -5,7 +5,9 @@
 // plant so that the view faces the arm (the arm reaches best near its own azimuth), so any view
 // direction around the plant is allowed; the arm only has to reach the view's elevation and
 // distance. The result is checked against the cell's limits: inverse kinematics inside the joint
-// limits, the camera above the turntable top and outside the plant's box by a margin.
+// limits, the camera above the turntable top and outside the plant's box by a margin, and, when
+// the arm's safety envelope is given, the whole joint move from the current joints as avc-robot
+// checks it (table, turntable, plant keep-out), so that the driver never refuses a planned view.
 
 #include <Eigen/Geometry>
 #include <optional>
@@ -13,6 +15,7 @@
 
 #include "core/camera/pinhole_camera.h"
 #include "core/kinematics/dh_parameters.h"
+#include "core/kinematics/safety_envelope.h"
 #include "sim/cell/cell_truth.h"
 
 namespace avc::planner {
@@ -31,7 +34,16 @@ struct ReachOptions {
   double plant_clearance = 0.05;
   // Azimuths tried around the arm's own when it cannot reach a view there, radians.
   std::vector<double> azimuth_offsets = {0, 0.5236, -0.5236, 1.0472, -1.0472};
+  // The envelope avc-robot enforces, as PlanningEnvelope gives it; unset: the checks above
+  // only. The planner sets its plant keep-out from the proxy as it grows, with
+  // plant_keep_out_margin (the orchestrator's 2 cm and 5 mm).
+  std::optional<kinematics::SafetyEnvelope> envelope;
+  double plant_keep_out_margin = 0.025;
 };
+
+// The driver's envelope as the planner checks it: grown by 5 mm (WithMargin) for the arm's
+// repeatability and the difference between planned and reported joints.
+kinematics::SafetyEnvelope PlanningEnvelope(const kinematics::SafetyEnvelope& driver);
 
 // nullopt when no turntable angle lets the arm reach the view within the limits above. Throws
 // std::invalid_argument for non-finite points or an eye on the target.

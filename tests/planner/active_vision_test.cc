@@ -1,7 +1,8 @@
 // Algorithm 1 end to end in the simulated cell, without the bus: captures are rendered label
 // images (a perfect colour filter) at a quarter of the camera's size. The run frames the plant,
 // takes the 3x10 orbit, adds views for badly seen patches with their reasons, removes redundant
-// ones without losing ground-truth coverage, and is deterministic; a plant the colour filter
+// ones without losing ground-truth coverage, and is deterministic; every move it makes passes the
+// arm driver's envelope (bench and turntable) from where the arm was; a plant the colour filter
 // cannot find, or captures that fail, are reported rather than crashing.
 
 #include "services/planner/active_vision.h"
@@ -13,6 +14,8 @@
 
 #include "core/eval/coverage.h"
 #include "core/geometry/mesh.h"
+#include "sim/cell/cell_fixtures.h"
+#include "sim/cell/view_selection.h"
 #include "sim/dataset/render_dataset.h"
 #include "sim/render/renderer.h"
 
@@ -58,6 +61,7 @@ std::optional<cv::Mat> LabelCapture(const sim::Scene& scene, const CellView& vie
 ActiveVisionOptions SmallRun() {
   ActiveVisionOptions options;
   options.max_views = 34;
+  options.reach.envelope = PlanningEnvelope(sim::FixturesEnvelope(TestPlant().cell));
   return options;
 }
 
@@ -67,8 +71,17 @@ TEST(ActiveVision, FramesOrbitsAddsViewsAndPrunesWithoutLosingCoverage) {
   std::vector<ActiveVisionStage> stages;
   std::vector<size_t> captures_at_stage;
   size_t captures = 0;
+  // Each move, framing frames included, as avc-robot would check it (without the planner's
+  // margin): from the joints of the capture before.
+  const kinematics::SafetyEnvelope driver = sim::FixturesEnvelope(plant.cell);
+  kinematics::JointVector arm = sim::StartJoints(plant.cell);
+  std::vector<std::string> refusals;
   const auto capture = [&](const CellView& view) {
     ++captures;
+    const std::string refusal =
+        kinematics::CheckJointMove(driver, plant.cell.dh, arm, view.joints, 1.0, 1.0);
+    if (!refusal.empty()) refusals.push_back(refusal);
+    arm = view.joints;
     return LabelCapture(plant.scene, view);
   };
   // The proxy is announced when it is made from the first height and after each view after.
@@ -80,6 +93,8 @@ TEST(ActiveVision, FramesOrbitsAddsViewsAndPrunesWithoutLosingCoverage) {
         captures_at_stage.push_back(captures);
       },
       [&](const ppr::PlantProxy& proxy) { proxy_views.push_back(proxy.view_count()); });
+  EXPECT_TRUE(refusals.empty()) << refusals.size() << " moves refused, the first: "
+                                << (refusals.empty() ? "" : refusals.front());
   ASSERT_FALSE(proxy_views.empty());
   EXPECT_EQ(proxy_views.front(), 10);
   EXPECT_EQ(proxy_views.size(), result.views.size() - 10 + 1);
@@ -133,6 +148,7 @@ TEST(ActiveVision, FramesOrbitsAddsViewsAndPrunesWithoutLosingCoverage) {
       << "kept " << kept.size() << " views: " << kept_coverage << ", orbit " << orbit_coverage;
 
   // Same plant and captures, same plan.
+  arm = sim::StartJoints(plant.cell);
   const ActiveVisionResult again = RunActiveVision(plant.cell, capture, SmallRun());
   ASSERT_EQ(again.views.size(), result.views.size());
   for (size_t i = 0; i < result.views.size(); ++i) {

@@ -1,6 +1,7 @@
 // Views realised in the nominal cell: the camera lands where it was asked, looking at the target,
 // on the turntable angle that faces the arm; views the arm cannot reach, below the table or in
-// the plant's box are refused, and bad input throws.
+// the plant's box are refused, and bad input throws. With the arm driver's envelope, a view whose
+// joint move it would refuse is not realised.
 
 #include "services/planner/cell_view.h"
 
@@ -9,6 +10,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "sim/cell/cell_fixtures.h"
 #include "sim/cell/view_selection.h"
 
 namespace avc::planner {
@@ -52,6 +54,29 @@ TEST(RealiseView, RefusesWhatTheCellCannotDo) {
   EXPECT_THROW(RealiseView(cell, Eigen::Vector3d(NAN, 0, 0), kAim, {}, joints),
                std::invalid_argument);
   EXPECT_THROW(RealiseView(cell, kAim, kAim, {}, joints), std::invalid_argument);
+}
+
+TEST(RealiseView, KeepsToTheDriversEnvelope) {
+  const sim::CellTruth cell = sim::NominalCell();
+  const kinematics::JointVector start = sim::StartJoints(cell);
+  ReachOptions reach;
+  reach.envelope = PlanningEnvelope(sim::FixturesEnvelope(cell));
+  // A low view over the bench: the move there passes the envelope from the start joints.
+  const auto low = RealiseView(cell, Eye(0.45, 15, 0), kAim, {}, start, reach);
+  ASSERT_TRUE(low.has_value());
+  EXPECT_EQ(kinematics::CheckJointMove(*reach.envelope, cell.dh, start, low->joints, 1.0, 1.0), "");
+  // Raise the bench to the camera's height: the flange would be under it, so the same view is no
+  // longer realised, though the arm reaches it without the envelope.
+  ReachOptions raised = reach;
+  raised.envelope->table_z_base_m = (cell.T_base_table * Eye(0.45, 15, 0)).z();
+  EXPECT_FALSE(RealiseView(cell, Eye(0.45, 15, 0), kAim, {}, start, raised).has_value());
+  EXPECT_TRUE(RealiseView(cell, Eye(0.45, 15, 0), kAim, {}, start).has_value());
+  // Nor when the keep-out cylinder about the turntable is made wide and tall enough to hold the
+  // flange at that view.
+  ReachOptions wide = reach;
+  wide.envelope->keep_out->radius_m = 0.6;
+  wide.envelope->keep_out->z_max_m = 2.0;
+  EXPECT_FALSE(RealiseView(cell, Eye(0.45, 15, 0), kAim, {}, start, wide).has_value());
 }
 
 }  // namespace

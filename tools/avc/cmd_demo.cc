@@ -22,6 +22,8 @@
 #include "orchestrator/demo_cell.h"
 #include "orchestrator/scan_run.h"
 #include "services/calibrator/calibration_collector.h"
+#include "services/planner/cell_view.h"
+#include "sim/cell/cell_fixtures.h"
 #include "sim/scene/plant.h"
 #include "tools/avc/bus_flags.h"
 #include "tools/avc/commands.h"
@@ -73,6 +75,7 @@ orchestrator::DemoCellOptions CellOptions(const DemoArgs& args, const fs::path& 
   options.work_dir = work_dir;
   options.bus = bus::ResolveBusOptions(args.bus, "avc-demo");
   options.sim_args = {"--time-scale", fmt::format("{}", args.time_scale)};
+  options.robot_args = sim::RobotEnvelopeArguments(sim::NominalCellEnvelope());
   return options;
 }
 
@@ -165,6 +168,7 @@ int RunDemo(const DemoArgs& args) {
   scan.scan_dir = dir;
   scan.calibration_file = calibration;
   scan.planner.max_views = args.max_views;
+  scan.planner.reach.envelope = planner::PlanningEnvelope(sim::NominalCellEnvelope());
   scan.stop_requested = [&loop] { return loop.quitting(); };
   ScanStateBroadcast broadcast(bus, loop);
   scan.on_kept_cameras = [&broadcast](const std::string& id, const auto& cameras) {

@@ -12,6 +12,7 @@
 #include "tools/avc/auth_flags.h"
 #include "tools/avc/bus_flags.h"
 #include "tools/avc/commands.h"
+#include "tools/avc/envelope_flags.h"
 #include "tools/avc/run_guarded.h"
 
 namespace avc::cli {
@@ -19,8 +20,7 @@ namespace {
 
 struct RobotArgs {
   robot::RobotNodeConfig config;
-  std::optional<double> table_z;
-  std::vector<double> keep_out;
+  EnvelopeFlags envelope;
   int64_t watchdog_timeout_ms = 500;
   AuthFlags auth;
   bus::BusFlags bus;
@@ -28,12 +28,7 @@ struct RobotArgs {
 
 int RunRobot(RobotArgs args) {
   robot::RobotNodeConfig& config = args.config;
-  config.envelope.table_z_base_m = args.table_z;
-  if (args.keep_out.size() == 5) {
-    config.envelope.keep_out =
-        robot::KeepOutCylinder{Eigen::Vector2d(args.keep_out[0], args.keep_out[1]),
-                               args.keep_out[2], args.keep_out[3], args.keep_out[4]};
-  }
+  ApplyEnvelopeFlags(args.envelope, &config.envelope);
   config.watchdog_timeout = std::chrono::milliseconds(args.watchdog_timeout_ms);
   bus::ServiceRuntime runtime(config.service, args.bus);
   config.auth = DriverAuth(args.auth, runtime.bus().cell());
@@ -62,11 +57,7 @@ void RegisterRobot(CLI::App& root, int* exit_code) {
       ->capture_default_str();
   command->add_option("--dashboard-port", c.dashboard_port, "dashboard port")
       ->capture_default_str();
-  command->add_option("--table-z", args->table_z, "table plane height in the base frame, m");
-  command
-      ->add_option("--keep-out", args->keep_out,
-                   "keep-out cylinder: x y radius z_min z_max (base frame, m)")
-      ->expected(5);
+  AddEnvelopeFlags(command, &args->envelope);
   command->add_option("--max-joint-speed", c.envelope.max_joint_speed_rad_s, "rad/s")
       ->capture_default_str();
   command->add_option("--max-linear-speed", c.envelope.max_linear_speed_m_s, "m/s")

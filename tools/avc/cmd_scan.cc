@@ -17,6 +17,7 @@
 #include "tools/avc/auth_flags.h"
 #include "tools/avc/bus_flags.h"
 #include "tools/avc/commands.h"
+#include "tools/avc/envelope_flags.h"
 #include "tools/avc/run_guarded.h"
 #include "tools/avc/scan_progress.h"
 
@@ -35,6 +36,7 @@ struct ScanArgs {
   int max_views = planner::ActiveVisionOptions{}.max_views;
   int views_per_level = planner::ActiveVisionOptions{}.views_per_level;
   double ready_timeout_s = 30;
+  EnvelopeFlags envelope;
   AuthFlags auth;
   bus::BusFlags bus;
 };
@@ -65,6 +67,11 @@ int RunScanCommand(const ScanArgs& args) {
   options.calibration_file = args.calibration;
   options.planner.max_views = args.max_views;
   options.planner.views_per_level = args.views_per_level;
+  if (args.envelope.table_z || !args.envelope.keep_out.empty()) {
+    kinematics::SafetyEnvelope driver;
+    ApplyEnvelopeFlags(args.envelope, &driver);
+    options.planner.reach.envelope = planner::PlanningEnvelope(driver);
+  }
   if (args.jpeg) options.capture.encoding = avc::image_t::ENCODING_JPEG;
   options.ready_timeout =
       std::chrono::milliseconds(static_cast<int64_t>(args.ready_timeout_s * 1e3));
@@ -116,6 +123,7 @@ void RegisterScan(CLI::App& root, int* exit_code) {
   command->add_option("--views-per-height", args->views_per_level, "orbit views per height")
       ->capture_default_str()
       ->check(CLI::Range(3, 36));
+  AddEnvelopeFlags(command, &args->envelope);
   command->add_flag("--jpeg", args->jpeg, "keep the camera's JPEG (default: lossless PNG)");
   command
       ->add_option("--ready-timeout", args->ready_timeout_s,

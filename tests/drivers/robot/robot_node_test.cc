@@ -16,6 +16,8 @@
 namespace avc::robot::testing {
 namespace {
 
+using kinematics::JointVector;
+
 class RobotNodeTest : public ::testing::Test {
  protected:
   void SetUp() override {

@@ -1,6 +1,6 @@
 // Safety envelope: joint limits, table plane, keep-out cylinder and caps, checked along paths.
 
-#include "drivers/robot/safety_envelope.h"
+#include "core/kinematics/safety_envelope.h"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 
 #include "core/kinematics/forward_kinematics.h"
 
-namespace avc::robot {
+namespace avc::kinematics {
 namespace {
 
 constexpr double kHalfPi = std::numbers::pi / 2;
@@ -23,7 +23,7 @@ TEST(SafetyEnvelope, AllowsAnOrdinaryMove) {
   ASSERT_EQ(envelope.Validate(), "");
   JointVector to = Home();
   to[0] = 0.5;
-  EXPECT_EQ(CheckJointMove(envelope, kinematics::NominalUr5(), Home(), to, 1.0, 1.0), "");
+  EXPECT_EQ(CheckJointMove(envelope, NominalUr5(), Home(), to, 1.0, 1.0), "");
 }
 
 TEST(SafetyEnvelope, RefusesJointLimitsAndCaps) {
@@ -31,7 +31,7 @@ TEST(SafetyEnvelope, RefusesJointLimitsAndCaps) {
   envelope.joint_max[0] = 0.4;
   JointVector to = Home();
   to[0] = 0.5;
-  const auto dh = kinematics::NominalUr5();
+  const auto dh = NominalUr5();
   EXPECT_NE(CheckJointMove(envelope, dh, Home(), to, 1.0, 1.0).find("joint 1"), std::string::npos);
   to[0] = 0.3;
   EXPECT_EQ(CheckJointMove(envelope, dh, Home(), to, 1.0, 1.0), "");
@@ -45,15 +45,15 @@ TEST(SafetyEnvelope, RefusesJointLimitsAndCaps) {
 TEST(SafetyEnvelope, RefusesGoingBelowTheTable) {
   SafetyEnvelope envelope;
   envelope.table_z_base_m = 0.0;
-  const auto dh = kinematics::NominalUr5();
+  const auto dh = NominalUr5();
   // q = 0 stretches the arm horizontally at z ~ -0.005 m: under the table clearance.
   const std::string reason = CheckJointMove(envelope, dh, Home(), JointVector::Zero(), 1.0, 1.0);
   EXPECT_NE(reason.find("below the table plane"), std::string::npos) << reason;
 }
 
 TEST(SafetyEnvelope, RefusesAPathThroughTheKeepOutCylinderEvenWhenBothEndsAreClear) {
-  const auto dh = kinematics::NominalUr5();
-  const Eigen::Vector3d middle = kinematics::ForwardKinematics(dh, Home()).translation();
+  const auto dh = NominalUr5();
+  const Eigen::Vector3d middle = ForwardKinematics(dh, Home()).translation();
   SafetyEnvelope envelope;
   envelope.keep_out = KeepOutCylinder{middle.head<2>(), 0.08, middle.z() - 0.3, middle.z() + 0.3};
   JointVector from = Home(), to = Home();
@@ -72,14 +72,13 @@ TEST(SafetyEnvelope, RefusesAPathThroughTheKeepOutCylinderEvenWhenBothEndsAreCle
 }
 
 TEST(SafetyEnvelope, LinearMoveChecksReachAndReturnsTheEndJoints) {
-  const auto dh = kinematics::NominalUr5();
+  const auto dh = NominalUr5();
   const SafetyEnvelope envelope;
-  Eigen::Isometry3d goal = kinematics::ForwardKinematics(dh, Home());
+  Eigen::Isometry3d goal = ForwardKinematics(dh, Home());
   goal.translation() += Eigen::Vector3d(0.05, -0.05, 0.1);
   JointVector end;
   ASSERT_EQ(CheckLinearMove(envelope, dh, Home(), goal, 0.1, 0.5, &end), "");
-  EXPECT_LT((kinematics::ForwardKinematics(dh, end).translation() - goal.translation()).norm(),
-            1e-8);
+  EXPECT_LT((ForwardKinematics(dh, end).translation() - goal.translation()).norm(), 1e-8);
   Eigen::Isometry3d far = goal;
   far.translation() = Eigen::Vector3d(2.0, 0, 0.3);
   EXPECT_NE(CheckLinearMove(envelope, dh, Home(), far, 0.1, 0.5).find("inverse kinematics"),
@@ -92,4 +91,4 @@ TEST(SafetyEnvelope, LinearMoveChecksReachAndReturnsTheEndJoints) {
 }
 
 }  // namespace
-}  // namespace avc::robot
+}  // namespace avc::kinematics

@@ -1,4 +1,4 @@
-#include "drivers/robot/safety_envelope.h"
+#include "core/kinematics/safety_envelope.h"
 
 #include <fmt/format.h>
 
@@ -7,7 +7,7 @@
 #include "core/kinematics/forward_kinematics.h"
 #include "core/kinematics/inverse_kinematics.h"
 
-namespace avc::robot {
+namespace avc::kinematics {
 namespace {
 
 constexpr std::array<const char*, 5> kFrameNames = {"elbow", "wrist 1", "wrist 2", "wrist 3",
@@ -21,7 +21,7 @@ std::string CheckKeepOut(const std::optional<KeepOutCylinder>& cylinder, const E
       cylinder->RadialDistance(p), cylinder->radius_m);
 }
 
-std::string CheckPlantKeepOut(const kinematics::PlantKeepOut& plant, const Eigen::Vector3d& p,
+std::string CheckPlantKeepOut(const PlantKeepOut& plant, const Eigen::Vector3d& p,
                               const std::string& name) {
   if (!plant.Contains(p)) return {};
   return fmt::format(
@@ -44,7 +44,7 @@ std::string CheckPoint(const SafetyEnvelope& envelope, const Eigen::Vector3d& p,
 }
 
 // Checks the elbow, wrists, flange and tool points at joints q.
-std::string CheckPose(const SafetyEnvelope& envelope, const kinematics::DhParameters& dh,
+std::string CheckPose(const SafetyEnvelope& envelope, const DhParameters& dh,
                       const JointVector& q) {
   for (int i = 0; i < 6; ++i) {
     if (q[i] < envelope.joint_min[i] || q[i] > envelope.joint_max[i]) {
@@ -52,7 +52,7 @@ std::string CheckPose(const SafetyEnvelope& envelope, const kinematics::DhParame
                          q[i], envelope.joint_min[i], envelope.joint_max[i]);
     }
   }
-  const auto frames = kinematics::JointFrames(dh, q);
+  const auto frames = JointFrames(dh, q);
   for (size_t f = 2; f < frames.size(); ++f) {
     if (auto error = CheckPoint(envelope, frames[f].translation(), kFrameNames[f - 2]);
         !error.empty()) {
@@ -92,6 +92,9 @@ std::string SafetyEnvelope::Validate() const {
     }
   }
   if (table_z_base_m && !std::isfinite(*table_z_base_m)) return "table_z_base_m is not finite";
+  if (!(std::isfinite(table_clearance_m) && table_clearance_m >= 0)) {
+    return "table_clearance_m must be finite and 0 or more";
+  }
   if (keep_out) {
     if (auto error = keep_out->Validate(); !error.empty()) return "keep_out: " + error;
   }
@@ -104,10 +107,20 @@ std::string SafetyEnvelope::Validate() const {
   return {};
 }
 
-std::string CheckJointMove(const SafetyEnvelope& envelope, const kinematics::DhParameters& dh,
+SafetyEnvelope WithMargin(SafetyEnvelope envelope, double margin_m) {
+  envelope.table_clearance_m += margin_m;
+  if (envelope.keep_out) {
+    envelope.keep_out->radius_m += margin_m;
+    envelope.keep_out->z_min_m -= margin_m;
+    envelope.keep_out->z_max_m += margin_m;
+  }
+  return envelope;
+}
+
+std::string CheckJointMove(const SafetyEnvelope& envelope, const DhParameters& dh,
                            const JointVector& from, const JointVector& to, double speed,
                            double acceleration) {
-  if (auto error = kinematics::ValidateJoints(to); !error.empty()) return "target: " + error;
+  if (auto error = ValidateJoints(to); !error.empty()) return "target: " + error;
   if (!from.allFinite()) return "current joints are not finite";
   if (auto error = CheckCaps(speed, acceleration, envelope.max_joint_speed_rad_s,
                              envelope.max_joint_acceleration_rad_s2, "rad/s");
@@ -123,7 +136,7 @@ std::string CheckJointMove(const SafetyEnvelope& envelope, const kinematics::DhP
   return {};
 }
 
-std::string CheckLinearMove(const SafetyEnvelope& envelope, const kinematics::DhParameters& dh,
+std::string CheckLinearMove(const SafetyEnvelope& envelope, const DhParameters& dh,
                             const JointVector& from, const Eigen::Isometry3d& T_base_flange,
                             double speed, double acceleration, JointVector* target_q) {
   if (!T_base_flange.matrix().allFinite()) return "target pose is not finite";
@@ -136,7 +149,7 @@ std::string CheckLinearMove(const SafetyEnvelope& envelope, const kinematics::Dh
       !error.empty()) {
     return "linear move " + error;
   }
-  const Eigen::Isometry3d start = kinematics::ForwardKinematics(dh, from);
+  const Eigen::Isometry3d start = ForwardKinematics(dh, from);
   const Eigen::Quaterniond q0(start.linear()), q1(T_base_flange.linear());
   JointVector q = from;
   for (int s = 1; s <= envelope.path_samples; ++s) {
@@ -144,7 +157,7 @@ std::string CheckLinearMove(const SafetyEnvelope& envelope, const kinematics::Dh
     Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
     pose.translation() = (1 - u) * start.translation() + u * T_base_flange.translation();
     pose.linear() = q0.slerp(u, q1).normalized().toRotationMatrix();
-    const auto next = kinematics::RefineInverseKinematics(dh, pose, q, 1e-9);
+    const auto next = RefineInverseKinematics(dh, pose, q, 1e-9);
     if (!next) {
       return fmt::format(
           "linear move at {:.0f}% of the path: no inverse kinematics (out of "
@@ -160,4 +173,4 @@ std::string CheckLinearMove(const SafetyEnvelope& envelope, const kinematics::Dh
   return {};
 }
 
-}  // namespace avc::robot
+}  // namespace avc::kinematics

@@ -1,0 +1,29 @@
+#include "tools/avc/envelope_flags.h"
+
+namespace avc::cli {
+
+void AddEnvelopeFlags(CLI::App* command, EnvelopeFlags* flags) {
+  command->add_option("--table-z", flags->table_z,
+                      "table plane height in the robot's base frame, m: every point of the arm "
+                      "stays above it by --table-clearance");
+  command->add_option("--table-clearance", flags->table_clearance, "m")->capture_default_str();
+  command
+      ->add_option("--keep-out", flags->keep_out,
+                   "keep-out cylinder, e.g. the turntable: x y radius z_min z_max (base frame, m)")
+      ->expected(5);
+}
+
+void ApplyEnvelopeFlags(const EnvelopeFlags& flags, kinematics::SafetyEnvelope* envelope) {
+  envelope->table_z_base_m = flags.table_z;
+  envelope->table_clearance_m = flags.table_clearance;
+  if (flags.keep_out.size() == 5) {
+    envelope->keep_out =
+        kinematics::KeepOutCylinder{Eigen::Vector2d(flags.keep_out[0], flags.keep_out[1]),
+                                    flags.keep_out[2], flags.keep_out[3], flags.keep_out[4]};
+  }
+  if (const std::string problem = envelope->Validate(); !problem.empty()) {
+    throw CLI::ValidationError("safety envelope", problem);
+  }
+}
+
+}  // namespace avc::cli

@@ -1,0 +1,27 @@
+#pragma once
+
+// The fixed safety-envelope flags (--table-z, --table-clearance, --keep-out): avc robot enforces
+// them on every motion; avc scan gives the same numbers to the planner, so that it only chooses
+// views whose moves the driver will make.
+
+#include <CLI/CLI.hpp>
+#include <optional>
+#include <vector>
+
+#include "core/kinematics/safety_envelope.h"
+
+namespace avc::cli {
+
+struct EnvelopeFlags {
+  std::optional<double> table_z;
+  double table_clearance = kinematics::SafetyEnvelope{}.table_clearance_m;
+  std::vector<double> keep_out;  // x y radius z_min z_max, or empty
+};
+
+void AddEnvelopeFlags(CLI::App* command, EnvelopeFlags* flags);
+
+// Sets envelope's table plane and keep-out cylinder from the flags (unset flags leave them
+// unset). Throws CLI::ValidationError when the result is not a usable envelope.
+void ApplyEnvelopeFlags(const EnvelopeFlags& flags, kinematics::SafetyEnvelope* envelope);
+
+}  // namespace avc::cli
