@@ -117,6 +117,8 @@ SafetyEnvelope WithMargin(SafetyEnvelope envelope, double margin_m) {
   return envelope;
 }
 
+SafetyEnvelope PlanningEnvelope(const SafetyEnvelope& driver) { return WithMargin(driver, 0.005); }
+
 std::string CheckJointMove(const SafetyEnvelope& envelope, const DhParameters& dh,
                            const JointVector& from, const JointVector& to, double speed,
                            double acceleration) {

@@ -46,6 +46,10 @@ struct SafetyEnvelope {
 // little, so that its moves pass the driver's check of the real joints.
 SafetyEnvelope WithMargin(SafetyEnvelope envelope, double margin_m);
 
+// The driver's envelope as a planner of moves (views, calibration poses) checks them: grown by
+// 5 mm for the arm's repeatability and the difference between planned and reported joints.
+SafetyEnvelope PlanningEnvelope(const SafetyEnvelope& driver);
+
 // Empty when the straight joint-space move from `from` to `to` stays inside the envelope at the
 // given speed and acceleration; else the reason, naming the joint, point or cap.
 std::string CheckJointMove(const SafetyEnvelope& envelope, const DhParameters& dh,

@@ -4,11 +4,14 @@
 // distance and roll over the board (rotations about several axes, as AX=ZB needs), then one
 // high pose that keeps the whole board in view while the table turns. Planned with the nominal
 // cell geometry (where the table roughly is from the robot, the nominal hand-eye); every pose
-// is kept only if the UR5 reaches it and the nominal camera sees every corner with a margin.
+// is kept only if the UR5 reaches it, the nominal camera sees every corner with a margin and,
+// when the arm's envelope is given, the joint move there from the pose before passes it.
 
+#include <optional>
 #include <vector>
 
 #include "core/kinematics/dh_parameters.h"
+#include "core/kinematics/safety_envelope.h"
 #include "sim/cell/cell_truth.h"
 #include "sim/scene/chessboard_scene.h"
 
@@ -17,6 +20,8 @@ namespace avc::calibrator {
 struct CalibrationPlanOptions {
   int hand_eye_poses = 12;
   int table_angles = 10;  // evenly spaced over a full turn
+  // The envelope avc-robot enforces, as kinematics::PlanningEnvelope gives it; unset: none.
+  std::optional<kinematics::SafetyEnvelope> envelope;
 };
 
 struct CalibrationPlan {

@@ -20,10 +20,6 @@ double ExteriorDistance(const Eigen::AlignedBox3d& box, const Eigen::Vector3d& p
 
 }  // namespace
 
-kinematics::SafetyEnvelope PlanningEnvelope(const kinematics::SafetyEnvelope& driver) {
-  return kinematics::WithMargin(driver, 0.005);
-}
-
 std::optional<CellView> RealiseView(const sim::CellTruth& cell, const Eigen::Vector3d& eye_world,
                                     const Eigen::Vector3d& target_world,
                                     const Eigen::AlignedBox3d& keep_out,

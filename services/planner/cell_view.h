@@ -34,16 +34,12 @@ struct ReachOptions {
   double plant_clearance = 0.05;
   // Azimuths tried around the arm's own when it cannot reach a view there, radians.
   std::vector<double> azimuth_offsets = {0, 0.5236, -0.5236, 1.0472, -1.0472};
-  // The envelope avc-robot enforces, as PlanningEnvelope gives it; unset: the checks above
-  // only. The planner sets its plant keep-out from the proxy as it grows, with
+  // The envelope avc-robot enforces, as kinematics::PlanningEnvelope gives it; unset: the checks
+  // above only. The planner sets its plant keep-out from the proxy as it grows, with
   // plant_keep_out_margin (the orchestrator's 2 cm and 5 mm).
   std::optional<kinematics::SafetyEnvelope> envelope;
   double plant_keep_out_margin = 0.025;
 };
-
-// The driver's envelope as the planner checks it: grown by 5 mm (WithMargin) for the arm's
-// repeatability and the difference between planned and reported joints.
-kinematics::SafetyEnvelope PlanningEnvelope(const kinematics::SafetyEnvelope& driver);
 
 // nullopt when no turntable angle lets the arm reach the view within the limits above. Throws
 // std::invalid_argument for non-finite points or an eye on the target.

@@ -61,7 +61,7 @@ std::optional<cv::Mat> LabelCapture(const sim::Scene& scene, const CellView& vie
 ActiveVisionOptions SmallRun() {
   ActiveVisionOptions options;
   options.max_views = 34;
-  options.reach.envelope = PlanningEnvelope(sim::FixturesEnvelope(TestPlant().cell));
+  options.reach.envelope = kinematics::PlanningEnvelope(sim::FixturesEnvelope(TestPlant().cell));
   return options;
 }
 

@@ -60,7 +60,7 @@ TEST(RealiseView, KeepsToTheDriversEnvelope) {
   const sim::CellTruth cell = sim::NominalCell();
   const kinematics::JointVector start = sim::StartJoints(cell);
   ReachOptions reach;
-  reach.envelope = PlanningEnvelope(sim::FixturesEnvelope(cell));
+  reach.envelope = kinematics::PlanningEnvelope(sim::FixturesEnvelope(cell));
   // A low view over the bench: the move there passes the envelope from the start joints.
   const auto low = RealiseView(cell, Eye(0.45, 15, 0), kAim, {}, start, reach);
   ASSERT_TRUE(low.has_value());

@@ -18,6 +18,7 @@
 #include "tools/avc/auth_flags.h"
 #include "tools/avc/bus_flags.h"
 #include "tools/avc/commands.h"
+#include "tools/avc/envelope_flags.h"
 #include "tools/avc/run_guarded.h"
 
 namespace avc::cli {
@@ -31,6 +32,7 @@ struct CalibrateArgs {
   std::string board = "9x6";
   double square_m = 0.025;
   calibrator::CalibrationPlanOptions plan;
+  EnvelopeFlags envelope;  // the poses' moves are planned inside it
   // Where the turntable's top centre roughly is in the robot base frame (metres), for planning.
   std::vector<double> table_in_base;
   std::string output;  // calibration.yaml; default <folder>/calibration.yaml
@@ -63,6 +65,11 @@ int RunCollect(const CalibrateArgs& args) {
   options.folder = args.folder;
   options.board = ParseBoard(args.board, args.square_m);
   options.plan = args.plan;
+  if (args.envelope.table_z || !args.envelope.keep_out.empty()) {
+    kinematics::SafetyEnvelope driver;
+    ApplyEnvelopeFlags(args.envelope, &driver);
+    options.plan.envelope = kinematics::PlanningEnvelope(driver);
+  }
   if (args.table_in_base.size() == 3) {
     // The table frame is not rotated against the base for planning; only its place matters.
     options.planning_cell.T_base_table = Eigen::Isometry3d::Identity();
@@ -126,6 +133,7 @@ void AddCollectFlags(CLI::App& command, CalibrateArgs& args) {
   command.add_option("--angles", args.plan.table_angles, "table angles over a full turn")
       ->capture_default_str()
       ->check(CLI::Range(3, 360));
+  AddEnvelopeFlags(&command, &args.envelope);
   AddSenderKeyFlag(&command, &args.auth);
   AddBusFlags(&command, &args.bus);
 }

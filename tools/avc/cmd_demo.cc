@@ -97,6 +97,7 @@ fs::path CalibrateSimulatedCell(const DemoArgs& args, const fs::path& work_dir) 
   collect.board.cols = 9;
   collect.board.rows = 6;
   collect.board.square_size = 0.025;
+  collect.plan.envelope = kinematics::PlanningEnvelope(sim::NominalCellEnvelope());
   try {
     const calibration::CalibrationDataset dataset =
         calibrator::CollectCalibrationDataset(client, collect, [](const std::string& what) {
@@ -168,7 +169,7 @@ int RunDemo(const DemoArgs& args) {
   scan.scan_dir = dir;
   scan.calibration_file = calibration;
   scan.planner.max_views = args.max_views;
-  scan.planner.reach.envelope = planner::PlanningEnvelope(sim::NominalCellEnvelope());
+  scan.planner.reach.envelope = kinematics::PlanningEnvelope(sim::NominalCellEnvelope());
   scan.stop_requested = [&loop] { return loop.quitting(); };
   ScanStateBroadcast broadcast(bus, loop);
   scan.on_kept_cameras = [&broadcast](const std::string& id, const auto& cameras) {

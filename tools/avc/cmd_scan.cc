@@ -70,7 +70,7 @@ int RunScanCommand(const ScanArgs& args) {
   if (args.envelope.table_z || !args.envelope.keep_out.empty()) {
     kinematics::SafetyEnvelope driver;
     ApplyEnvelopeFlags(args.envelope, &driver);
-    options.planner.reach.envelope = planner::PlanningEnvelope(driver);
+    options.planner.reach.envelope = kinematics::PlanningEnvelope(driver);
   }
   if (args.jpeg) options.capture.encoding = avc::image_t::ENCODING_JPEG;
   options.ready_timeout =
