@@ -27,14 +27,23 @@ void PrintPlant(const NbvCase& nbv_case, const IsolatedResult& run) {
   const nlohmann::json& r = run.result;
   std::cout << fmt::format(" ({} ground-truth samples, {} renders, peak {:.0f} MB)\n",
                            r["samples"].get<size_t>(), r["renders"].get<int>(), run.peak_memory_mb);
-  std::cout << fmt::format("{:<28} {:>7} {:>9} {:>9} {:>9} {:>9} {:>8}\n", "method", "images",
-                           "coverage", "after 10", "after 20", "after 30", "to 90%");
+  std::cout << fmt::format("{:<28} {:>7} {:>9} {:>9} {:>9} {:>9} {:>8} {:>8} {:>8} {:>8}\n",
+                           "method", "images", "coverage", "after 10", "after 20", "after 30",
+                           "to 90%", "points", "pts/img", "mean mm");
   for (const nlohmann::json& m : r["methods"]) {
     std::cout << fmt::format(
-        "{:<28} {:>7} {:>9} {:>9} {:>9} {:>9} {:>8}\n", m["method"].get<std::string>(),
-        m["images"].get<size_t>(), Percent(m, "coverage"), Percent(m, "after_10"),
-        Percent(m, "after_20"), Percent(m, "after_30"),
-        m.contains("images_to_90") ? std::to_string(m["images_to_90"].get<int>()) : "-");
+        "{:<28} {:>7} {:>9} {:>9} {:>9} {:>9} {:>8} {:>8} {:>8} {:>8}\n",
+        m["method"].get<std::string>(), m["images"].get<size_t>(), Percent(m, "coverage"),
+        Percent(m, "after_10"), Percent(m, "after_20"), Percent(m, "after_30"),
+        m.contains("images_to_90") ? std::to_string(m["images_to_90"].get<int>()) : "-",
+        m.contains("points") ? std::to_string(m["points"].get<size_t>()) : "-",
+        m.contains("points_per_image") ? fmt::format("{:.0f}", m["points_per_image"].get<double>())
+                                       : "-",
+        m.contains("mean_distance_mm") ? fmt::format("{:.3f}", m["mean_distance_mm"].get<double>())
+                                       : "-");
+    if (m.contains("build_error")) {
+      std::cout << "  build failed: " << m["build_error"].get<std::string>() << "\n";
+    }
   }
   const nlohmann::json& ours = r["methods"][0];
   std::cout << fmt::format("ours: {} captured, {} kept; {} patches, {} below the target",
@@ -59,6 +68,7 @@ int RunNbvBenchmark(const std::vector<std::string>& arguments) {
   int baseline_views = 40;
   uint64_t seed = 1;
   bool json = false;
+  bool build = false;
   CLI::App app{
       "avc bench nbv: the planner's active vision (Algorithm 1: framing, the 3x10 orbit,\n"
       "view-sphere search for badly seen proxy patches, redundant-view removal) in the\n"
@@ -76,16 +86,19 @@ int RunNbvBenchmark(const std::vector<std::string>& arguments) {
       ->capture_default_str()
       ->check(CLI::Range(3, 200));
   app.add_option("--seed", seed, "coverage sampling and random-view seed")->capture_default_str();
+  app.add_flag("--build", build,
+               "also run the builder (patch MVS) on every view set but the ceiling and score its "
+               "points against the plant: the paper's Table 1 (minutes per plant)");
   app.add_flag("--json", json, "print the results as one JSON line at the end");
   if (const auto exit_code = ParseBenchmarkArguments(app, arguments)) return *exit_code;
 
   std::vector<NbvCase> cases;
   for (const std::string& preset : presets) {
-    if (!preset.empty()) cases.push_back({preset, {}, scale, baseline_views, seed});
+    if (!preset.empty()) cases.push_back({preset, {}, scale, baseline_views, seed, build});
   }
   for (const std::string& mesh : meshes) {
     cases.push_back(
-        {std::filesystem::path(mesh).stem().string(), mesh, scale, baseline_views, seed});
+        {std::filesystem::path(mesh).stem().string(), mesh, scale, baseline_views, seed, build});
   }
   nlohmann::json report = {{"benchmark", "nbv"}, {"plants", nlohmann::json::array()}};
   bool failed = false;

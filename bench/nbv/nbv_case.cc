@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 
 #include "bench/mvs/plant_organs.h"
 #include "bench/nbv/simulated_capture.h"
+#include "bench/nbv/view_set_build.h"
 #include "bench/summary.h"
 #include "core/eval/coverage.h"
 #include "services/planner/active_vision.h"
@@ -67,7 +69,17 @@ nlohmann::json RunNbvCase(const NbvCase& nbv_case) {
   }
   const sim::Scene scene = sim::MakeScene(scene_options);
   const sim::CellTruth cell = sim::MakeCell(scene_options);
-  const eval::CoverageModel model(PlantOrgans(scene.mesh), 2e5, nbv_case.seed);
+  const geometry::Mesh organs = PlantOrgans(scene.mesh);
+  const eval::CoverageModel model(organs, 2e5, nbv_case.seed);
+  const auto method = [&](const std::string& name, const std::vector<camera::Camera>& cameras,
+                          bool build) {
+    nlohmann::json json = MethodJson(name, model, cameras);
+    if (build && nbv_case.build) {
+      std::cerr << "  building " << name << " (" << cameras.size() << " images)\n";
+      json.update(BuildViewSet(scene, cameras, nbv_case.render_scale, organs));
+    }
+    return json;
+  };
 
   SimulatedCapture capture(scene, nbv_case.render_scale);
   const planner::ActiveVisionResult ours =
@@ -79,7 +91,7 @@ nlohmann::json RunNbvCase(const NbvCase& nbv_case) {
     if (v.phase == "initial") initial.push_back(v.view.camera);
   }
   nlohmann::json methods = nlohmann::json::array();
-  nlohmann::json our_json = MethodJson("ours (Algorithm 1)", model, kept);
+  nlohmann::json our_json = method("ours (Algorithm 1)", kept, true);
   our_json["captured"] = ours.views.size();
   our_json["patches"] = ours.patches;
   our_json["failing_patches"] = ours.failing_patches;
@@ -92,7 +104,7 @@ nlohmann::json RunNbvCase(const NbvCase& nbv_case) {
   }
   our_json["notes"] = ours.notes;
   methods.push_back(our_json);
-  methods.push_back(MethodJson("orbit 3x10 (Phase 1 alone)", model, initial));
+  methods.push_back(method("orbit 3x10 (Phase 1 alone)", initial, true));
 
   // The baselines around the same framed plant: the middle height's distance and the aim.
   planner::BaselineFrame frame;
@@ -100,27 +112,28 @@ nlohmann::json RunNbvCase(const NbvCase& nbv_case) {
   frame.distance =
       ours.framed_distances.empty() ? 0.5 : ours.framed_distances[ours.framed_distances.size() / 2];
   const int n = nbv_case.baseline_views;
-  methods.push_back(MethodJson(fmt::format("one static camera ({})", n), model,
-                               Cameras(planner::StaticCameraViews(cell, frame, 30 * kDegree, n))));
-  methods.push_back(MethodJson(
-      fmt::format("two static cameras ({})", n), model,
-      Cameras(planner::TwoStaticCameraViews(cell, frame, 10 * kDegree, 60 * kDegree, n))));
-  methods.push_back(MethodJson(fmt::format("random reachable ({})", n), model,
-                               Cameras(planner::RandomViews(cell, frame, n, nbv_case.seed))));
+  methods.push_back(method(fmt::format("one static camera ({})", n),
+                           Cameras(planner::StaticCameraViews(cell, frame, 30 * kDegree, n)),
+                           true));
+  methods.push_back(method(
+      fmt::format("two static cameras ({})", n),
+      Cameras(planner::TwoStaticCameraViews(cell, frame, 10 * kDegree, 60 * kDegree, n)), true));
+  methods.push_back(method(fmt::format("random reachable ({})", n),
+                           Cameras(planner::RandomViews(cell, frame, n, nbv_case.seed)), true));
   // The ceiling: every reachable view of a dense sphere (5 to 85 degrees in 10 degree steps).
   std::vector<double> dense_elevations;
   for (int e = 5; e <= 85; e += 10) dense_elevations.push_back(e * kDegree);
   const std::vector<planner::CellView> sphere =
       planner::SphereViews(cell, frame, dense_elevations, 24);
-  methods.push_back(MethodJson(fmt::format("all sphere views ({}, ceiling)", sphere.size()), model,
-                               Cameras(sphere)));
+  methods.push_back(
+      method(fmt::format("all sphere views ({}, ceiling)", sphere.size()), Cameras(sphere), false));
   // At our image count, on the proxy box our run found.
   const int ours_count = static_cast<int>(kept.size());
-  methods.push_back(
-      MethodJson(fmt::format("information gain ({})", ours_count), model,
-                 Cameras(planner::InformationGainViews(
-                     cell, [&](const planner::CellView& view) { return capture(view); },
-                     ours.proxy->box(), frame.aim, frame.distance, ours_count))));
+  methods.push_back(method(fmt::format("information gain ({})", ours_count),
+                           Cameras(planner::InformationGainViews(
+                               cell, [&](const planner::CellView& view) { return capture(view); },
+                               ours.proxy->box(), frame.aim, frame.distance, ours_count)),
+                           true));
   return {{"plant", nbv_case.plant},
           {"samples", model.samples().size()},
           {"renders", capture.captures()},

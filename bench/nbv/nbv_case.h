@@ -17,12 +17,15 @@ struct NbvCase {
   double render_scale = 0.5;
   int baseline_views = 40;
   uint64_t seed = 1;
+  // Also run the builder on every view set but the ceiling (the paper's Table 1).
+  bool build = false;
 };
 
 // Figures: per method (ours, orbit 3x10, one static, two static, random, information gain at our
 // image count) the images, coverage,
 // coverage after 10/20/30 images and images to 90 %; ours also captured, planning seconds per
-// next-best-view iteration (median, max), patches, failing patches and notes.
+// next-best-view iteration (median, max), patches, failing patches and notes; with `build`, each
+// set's points, points per image and their mean distance to the plant (view_set_build.h).
 nlohmann::json RunNbvCase(const NbvCase& nbv_case);
 
 }  // namespace avc::bench

@@ -7,21 +7,25 @@
 
 namespace avc::bench {
 
+camera::Camera ScaledCamera(const camera::Camera& camera, double scale) {
+  camera::Camera scaled = camera;
+  camera::Intrinsics& k = scaled.intrinsics;
+  k.width = static_cast<int>(std::lround(k.width * scale));
+  k.height = static_cast<int>(std::lround(k.height * scale));
+  k.fx *= scale;
+  k.fy *= scale;
+  k.cx = (k.cx + 0.5) * scale - 0.5;
+  k.cy = (k.cy + 0.5) * scale - 0.5;
+  return scaled;
+}
+
 SimulatedCapture::SimulatedCapture(const sim::Scene& scene, double scale)
     : scene_(scene), scale_(scale) {}
 
 std::optional<cv::Mat> SimulatedCapture::operator()(const planner::CellView& view) {
-  camera::Camera small = view.camera;
-  camera::Intrinsics& k = small.intrinsics;
-  const int width = k.width;
-  const int height = k.height;
-  k.width = static_cast<int>(std::lround(width * scale_));
-  k.height = static_cast<int>(std::lround(height * scale_));
-  // Pixel centres at integers: the scaled principal point keeps the same rays.
-  k.fx *= scale_;
-  k.fy *= scale_;
-  k.cx = (k.cx + 0.5) * scale_ - 0.5;
-  k.cy = (k.cy + 0.5) * scale_ - 0.5;
+  const camera::Camera small = ScaledCamera(view.camera, scale_);
+  const int width = view.camera.intrinsics.width;
+  const int height = view.camera.intrinsics.height;
   sim::RenderOptions options;
   options.samples_per_pixel_axis = 1;
   renderer_.Render(scene_, small, options, &frame_);

@@ -13,6 +13,9 @@
 
 namespace avc::bench {
 
+// The camera at `scale` times its resolution, with the same rays (pixel centres at integers).
+camera::Camera ScaledCamera(const camera::Camera& camera, double scale);
+
 class SimulatedCapture {
  public:
   // `scale`: render size over the camera's (0.5: 640x480 for the cell's 1280x960 camera).
