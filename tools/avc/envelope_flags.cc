@@ -3,14 +3,22 @@
 namespace avc::cli {
 
 void AddEnvelopeFlags(CLI::App* command, EnvelopeFlags* flags) {
-  command->add_option("--table-z", flags->table_z,
-                      "table plane height in the robot's base frame, m: every point of the arm "
-                      "stays above it by --table-clearance");
-  command->add_option("--table-clearance", flags->table_clearance, "m")->capture_default_str();
+  // The same flags and meaning in avc robot, avc scan and avc calibrate.
+  const char* group = "Safety envelope (give avc robot, avc scan and avc calibrate the same)";
+  command
+      ->add_option("--table-z", flags->table_z,
+                   "the bench's height in the robot's base frame, m: every checked point of the "
+                   "arm stays above it by --table-clearance")
+      ->group(group);
+  command
+      ->add_option("--table-clearance", flags->table_clearance, "clearance kept above the bench, m")
+      ->capture_default_str()
+      ->group(group);
   command
       ->add_option("--keep-out", flags->keep_out,
                    "keep-out cylinder, e.g. the turntable: x y radius z_min z_max (base frame, m)")
-      ->expected(5);
+      ->expected(5)
+      ->group(group);
 }
 
 void ApplyEnvelopeFlags(const EnvelopeFlags& flags, kinematics::SafetyEnvelope* envelope) {
