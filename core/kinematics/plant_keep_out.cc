@@ -7,14 +7,10 @@
 #include <limits>
 #include <stdexcept>
 
+#include "core/geometry/rigid_transform.h"
+
 namespace avc::kinematics {
 namespace {
-
-bool Rigid(const Eigen::Isometry3d& T) {
-  if (!T.matrix().allFinite()) return false;
-  const Eigen::Matrix3d r = T.linear();
-  return (r * r.transpose() - Eigen::Matrix3d::Identity()).norm() < 1e-6 && r.determinant() > 0;
-}
 
 // -1 below slab 0, size() above the last.
 int SlabOf(const PlantKeepOut& k, double z_table) {
@@ -27,7 +23,10 @@ int SlabOf(const PlantKeepOut& k, double z_table) {
 }  // namespace
 
 std::string PlantKeepOut::Validate() const {
-  if (!Rigid(T_base_table)) return "plant keep-out: T_base_table is not a finite rigid transform";
+  if (auto problem = geometry::RigidTransformProblem(T_base_table, "plant keep-out: T_base_table");
+      !problem.empty()) {
+    return problem;
+  }
   if (!std::isfinite(z0_m) || !(slab_m > 0) || !std::isfinite(slab_m)) {
     return fmt::format("plant keep-out: z0 {} m and slab {} m must be finite, slab > 0", z0_m,
                        slab_m);
@@ -60,8 +59,9 @@ bool PlantKeepOut::Contains(const Eigen::Vector3d& p_base) const {
 PlantKeepOut PlantKeepOutFromVoxels(const std::vector<Eigen::Vector3f>& centres_world,
                                     double voxel_m, const Eigen::Isometry3d& T_base_table,
                                     double margin_m, double slab_m) {
-  if (!Rigid(T_base_table) || !(voxel_m > 0) || !std::isfinite(voxel_m) || !(margin_m >= 0) ||
-      !std::isfinite(margin_m) || !(slab_m > 0) || !std::isfinite(slab_m)) {
+  if (!geometry::RigidTransformProblem(T_base_table, "").empty() || !(voxel_m > 0) ||
+      !std::isfinite(voxel_m) || !(margin_m >= 0) || !std::isfinite(margin_m) || !(slab_m > 0) ||
+      !std::isfinite(slab_m)) {
     throw std::invalid_argument(
         "PlantKeepOutFromVoxels: needs a rigid transform, voxel and slab > 0 and margin >= 0");
   }

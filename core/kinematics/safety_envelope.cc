@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "core/geometry/rigid_transform.h"
 #include "core/kinematics/forward_kinematics.h"
 #include "core/kinematics/inverse_kinematics.h"
 
@@ -141,10 +142,9 @@ std::string CheckJointMove(const SafetyEnvelope& envelope, const DhParameters& d
 std::string CheckLinearMove(const SafetyEnvelope& envelope, const DhParameters& dh,
                             const JointVector& from, const Eigen::Isometry3d& T_base_flange,
                             double speed, double acceleration, JointVector* target_q) {
-  if (!T_base_flange.matrix().allFinite()) return "target pose is not finite";
-  const Eigen::Matrix3d r = T_base_flange.linear();
-  if ((r * r.transpose() - Eigen::Matrix3d::Identity()).norm() > 1e-6 || r.determinant() < 0) {
-    return "target pose rotation is not orthonormal";
+  if (auto problem = geometry::RigidTransformProblem(T_base_flange, "target pose");
+      !problem.empty()) {
+    return problem;
   }
   if (auto error = CheckCaps(speed, acceleration, envelope.max_linear_speed_m_s,
                              envelope.max_linear_acceleration_m_s2, "m/s");

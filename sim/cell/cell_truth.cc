@@ -5,32 +5,20 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/geometry/rigid_transform.h"
 #include "core/kinematics/forward_kinematics.h"
 
 namespace avc::sim {
-namespace {
-
-std::string ValidateRigid(const Eigen::Isometry3d& transform, const char* name) {
-  if (!transform.matrix().allFinite()) return fmt::format("{} is not finite", name);
-  const Eigen::Matrix3d rotation = transform.linear();
-  const double orthogonality =
-      (rotation * rotation.transpose() - Eigen::Matrix3d::Identity()).norm();
-  if (orthogonality > 1e-9 || rotation.determinant() < 0) {
-    return fmt::format("{} has a rotation that is not a rotation matrix (|R R^T - I| = {:g})", name,
-                       orthogonality);
-  }
-  const Eigen::RowVector4d bottom = transform.matrix().row(3);
-  if (bottom != Eigen::RowVector4d(0, 0, 0, 1))
-    return fmt::format("{} has a bottom row other than 0 0 0 1", name);
-  return {};
-}
-
-}  // namespace
+namespace {}  // namespace
 
 std::string CellTruth::Validate() const {
   if (std::string error = dh.Validate(); !error.empty()) return "robot " + error;
-  if (std::string error = ValidateRigid(T_base_table, "T_base_table"); !error.empty()) return error;
-  if (std::string error = ValidateRigid(T_flange_cam, "T_flange_cam"); !error.empty()) return error;
+  if (std::string error = geometry::RigidTransformProblem(T_base_table, "T_base_table", 1e-9);
+      !error.empty())
+    return error;
+  if (std::string error = geometry::RigidTransformProblem(T_flange_cam, "T_flange_cam", 1e-9);
+      !error.empty())
+    return error;
   if (!turntable_axis_table.allFinite() || std::abs(turntable_axis_table.norm() - 1) > 1e-9) {
     return "turntable axis is not a finite unit vector";
   }

@@ -85,7 +85,7 @@ TEST(SafetyEnvelope, LinearMoveChecksReachAndReturnsTheEndJoints) {
             std::string::npos);
   Eigen::Isometry3d skewed = goal;
   skewed.linear() *= 1.1;
-  EXPECT_NE(CheckLinearMove(envelope, dh, Home(), skewed, 0.1, 0.5).find("orthonormal"),
+  EXPECT_NE(CheckLinearMove(envelope, dh, Home(), skewed, 0.1, 0.5).find("not a rigid transform"),
             std::string::npos);
   EXPECT_NE(CheckLinearMove(envelope, dh, Home(), goal, 1.0, 0.5).find("speed"), std::string::npos);
 }

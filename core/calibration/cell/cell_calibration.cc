@@ -5,26 +5,22 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/geometry/rigid_transform.h"
 #include "core/kinematics/forward_kinematics.h"
 
 namespace avc::calibration {
-namespace {
-
-bool IsRigid(const Eigen::Isometry3d& pose) {
-  const Eigen::Matrix3d r = pose.linear();
-  return pose.matrix().allFinite() &&
-         (r.transpose() * r - Eigen::Matrix3d::Identity()).norm() < 1e-6 &&
-         std::abs(r.determinant() - 1) < 1e-6;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 std::string CellCalibration::Validate() const {
   if (std::string problem = intrinsics.Validate(); !problem.empty())
     return "intrinsics: " + problem;
-  if (!IsRigid(T_flange_cam)) return "T_flange_cam is not a rigid transform";
-  if (!IsRigid(T_base_table)) return "T_base_table is not a rigid transform";
-  if (!IsRigid(T_table_board)) return "T_table_board is not a rigid transform";
+  for (const auto& [pose, name] :
+       {std::pair{&T_flange_cam, "T_flange_cam"}, std::pair{&T_base_table, "T_base_table"},
+        std::pair{&T_table_board, "T_table_board"}}) {
+    if (auto problem = geometry::RigidTransformProblem(*pose, name); !problem.empty()) {
+      return problem;
+    }
+  }
   if (std::string problem = dh.Validate(); !problem.empty()) return "kinematics: " + problem;
   return "";
 }

@@ -9,7 +9,7 @@
 #include <stdexcept>
 
 #include "core/calibration/hand_eye/refinement_residuals.h"
-#include "core/calibration/hand_eye/rigid_pose_check.h"
+#include "core/geometry/rigid_transform.h"
 
 namespace avc::calibration::hand_eye {
 namespace {
@@ -18,7 +18,8 @@ void CheckViews(const std::vector<BoardView>& views) {
   if (views.empty()) throw std::invalid_argument("hand-eye refinement: no views");
   for (size_t i = 0; i < views.size(); ++i) {
     const BoardView& view = views[i];
-    const std::string error = RigidPoseError(view.T_base_flange, fmt::format("view {} pose", i));
+    const std::string error =
+        geometry::RigidTransformProblem(view.T_base_flange, fmt::format("view {} pose", i));
     if (!error.empty()) throw std::invalid_argument("hand-eye refinement: " + error);
     if (view.board_points.empty() || view.board_points.size() != view.pixels.size()) {
       throw std::invalid_argument(
@@ -87,7 +88,7 @@ RefinementResult RefineOnReprojection(const std::vector<BoardView>& views,
   CheckViews(views);
   for (const auto& [pose, name] : {std::pair{&T_board_base_start, "start T_board_base"},
                                    std::pair{&T_cam_flange_start, "start T_cam_flange"}}) {
-    if (std::string error = RigidPoseError(*pose, name); !error.empty()) {
+    if (std::string error = geometry::RigidTransformProblem(*pose, name); !error.empty()) {
       throw std::invalid_argument("hand-eye refinement: " + error);
     }
   }

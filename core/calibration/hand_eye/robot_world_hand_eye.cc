@@ -4,9 +4,9 @@
 
 #include <numbers>
 
-#include "core/calibration/hand_eye/rigid_pose_check.h"
 #include "core/calibration/hand_eye/rotation_solve.h"
 #include "core/calibration/hand_eye/translation_solve.h"
+#include "core/geometry/rigid_transform.h"
 
 namespace avc::calibration::hand_eye {
 
@@ -14,7 +14,8 @@ void CheckObservations(const std::vector<HandEyeObservation>& observations) {
   for (size_t i = 0; i < observations.size(); ++i) {
     for (const auto& [pose, field] : {std::pair{&observations[i].T_base_flange, "T_base_flange"},
                                       std::pair{&observations[i].T_cam_board, "T_cam_board"}}) {
-      const std::string error = RigidPoseError(*pose, fmt::format("observation {} {}", i, field));
+      const std::string error =
+          geometry::RigidTransformProblem(*pose, fmt::format("observation {} {}", i, field));
       if (!error.empty()) throw std::invalid_argument("hand-eye calibration: " + error);
     }
   }

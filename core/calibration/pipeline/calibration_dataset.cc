@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "core/geometry/rigid_transform.h"
+
 namespace avc::calibration {
 namespace {
 
@@ -16,14 +18,6 @@ constexpr int kVersion = 1;
 
 const char* PurposeName(ShotPurpose purpose) {
   return purpose == ShotPurpose::kHandEye ? "hand_eye" : "turntable";
-}
-
-bool IsRigid(const Eigen::Isometry3d& pose) {
-  const Eigen::Matrix3d r = pose.linear();
-  return pose.matrix().allFinite() &&
-         (r.transpose() * r - Eigen::Matrix3d::Identity()).norm() < 1e-6 &&
-         std::abs(r.determinant() - 1) < 1e-6 &&
-         pose.matrix().row(3).isApprox(Eigen::RowVector4d(0, 0, 0, 1));
 }
 
 }  // namespace
@@ -86,9 +80,10 @@ CalibrationDataset LoadCalibrationDataset(const std::filesystem::path& folder) {
     if (!std::isfinite(shot.table_angle)) {
       fail(fmt::format("shot {} ({}): table angle is not finite", i, shot.image));
     }
-    if (!IsRigid(shot.T_base_flange)) {
-      fail(fmt::format("shot {} ({}): T_base_flange is not a finite rigid transform", i,
-                       shot.image));
+    if (auto problem = geometry::RigidTransformProblem(
+            shot.T_base_flange, fmt::format("shot {} ({}): T_base_flange", i, shot.image));
+        !problem.empty()) {
+      fail(problem);
     }
     if (!std::filesystem::exists(folder / shot.image)) {
       fail(fmt::format("shot {}: image {} does not exist", i, (folder / shot.image).string()));

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/geometry/rigid_transform.h"
+
 namespace avc::calibration {
 
 double AngularSpan(const std::vector<double>& angles) {
@@ -35,12 +37,11 @@ void ValidateTurntableViews(const std::vector<TurntableView>& views,
     const TurntableView& view = views[i];
     if (!std::isfinite(view.angle))
       throw std::invalid_argument(fmt::format("{}: view {} has a non-finite angle", method, i));
-    if (!view.T_fixed_board.matrix().allFinite())
-      throw std::invalid_argument(fmt::format("{}: view {} has a non-finite pose", method, i));
-    const Eigen::Matrix3d R = view.T_fixed_board.linear();
-    if ((R.transpose() * R - Eigen::Matrix3d::Identity()).norm() > 1e-6 || R.determinant() < 0)
-      throw std::invalid_argument(
-          fmt::format("{}: view {} has a rotation that is not orthonormal", method, i));
+    if (auto problem = geometry::RigidTransformProblem(
+            view.T_fixed_board, fmt::format("{}: view {} T_fixed_board", method, i));
+        !problem.empty()) {
+      throw std::invalid_argument(problem);
+    }
     angles.push_back(view.angle);
   }
   const double span = AngularSpan(angles);

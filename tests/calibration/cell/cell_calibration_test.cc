@@ -63,7 +63,8 @@ TEST(CellCalibration, RefusesNonFiniteQueriesAndNonRigidTransforms) {
                std::invalid_argument);
   EXPECT_THROW(calibration.CameraAtJoints(Joints(0, 0, 0, 0, 0, 100), 0), std::invalid_argument);
   calibration.T_flange_cam.linear() *= 2;
-  EXPECT_EQ(calibration.Validate(), "T_flange_cam is not a rigid transform");
+  EXPECT_EQ(calibration.Validate(),
+            "T_flange_cam is not a rigid transform: its rotation block has |R R^T - I| = 5.2");
 }
 
 TEST(CalibrationYaml, RoundTripsByteForByte) {

@@ -128,7 +128,8 @@ TEST(HandEyeDegeneracy, RejectsNonFinitePoseNamingTheIndex) {
     SolveRobotWorldHandEye(observations);
     FAIL() << "a NaN pose was accepted";
   } catch (const std::invalid_argument& error) {
-    EXPECT_NE(std::string(error.what()).find("observation 3 T_cam_board is not finite"),
+    EXPECT_NE(std::string(error.what())
+                  .find("observation 3 T_cam_board is not a rigid transform: not finite"),
               std::string::npos)
         << error.what();
   }
@@ -141,8 +142,9 @@ TEST(HandEyeDegeneracy, RejectsNonRigidPoseNamingTheIndex) {
     SolveRobotWorldHandEye(observations);
     FAIL() << "a scaled pose was accepted";
   } catch (const std::invalid_argument& error) {
-    EXPECT_NE(std::string(error.what()).find("observation 4 T_base_flange is not rigid"),
-              std::string::npos)
+    EXPECT_NE(
+        std::string(error.what()).find("observation 4 T_base_flange is not a rigid transform"),
+        std::string::npos)
         << error.what();
   }
   observations = Observe(GoodPoses());

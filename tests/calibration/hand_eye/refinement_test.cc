@@ -192,8 +192,9 @@ TEST(HandEyeRefinement, RejectsBadInputWithTheReason) {
             std::string::npos);
   views = good;
   views[3].T_base_flange.linear() *= 2;
-  EXPECT_NE(Rejection(views, scenario.intrinsics, X, Z).find("view 3 pose is not rigid"),
-            std::string::npos);
+  EXPECT_NE(
+      Rejection(views, scenario.intrinsics, X, Z).find("view 3 pose is not a rigid transform"),
+      std::string::npos);
   RefinementOptions half_prior;
   half_prior.robot_rotation_sigma_deg = 0;
   EXPECT_THROW(RefineOnReprojection(good, scenario.intrinsics, X, Z, half_prior),

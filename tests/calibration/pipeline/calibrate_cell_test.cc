@@ -157,7 +157,8 @@ TEST(CalibrationDataset, RefusesBadDatasetsNamingTheShot) {
   dataset.shots[0].T_base_flange.matrix()(0, 3) = 0;
   dataset.shots[0].T_base_flange.matrix()(0, 0) = 2;  // not a rotation
   SaveCalibrationDataset(dataset);
-  EXPECT_NE(error_of().find("not a finite rigid transform"), std::string::npos) << error_of();
+  EXPECT_NE(error_of().find("T_base_flange is not a rigid transform"), std::string::npos)
+      << error_of();
 
   // A readable dataset whose images hold no board: refused, not solved.
   dataset.shots[0].T_base_flange = Eigen::Isometry3d::Identity();
