@@ -55,8 +55,11 @@ void CheckOptions(const ClusterOptions& o) {
   Require(o.neck_neighbours >= 1 && o.neck_lanczos_steps >= 2 && o.sheet_lanczos_steps >= 2,
           "neck_neighbours must be >= 1, neck_lanczos_steps and sheet_lanczos_steps >= 2");
   Require(std::isfinite(o.max_neck_ratio) && o.max_neck_ratio >= 0 &&
-              std::isfinite(o.neck_bend_factor) && o.neck_bend_factor >= 0,
-          "max_neck_ratio and neck_bend_factor must be finite and >= 0");
+              std::isfinite(o.neck_bend_factor) && o.neck_bend_factor >= 0 &&
+              std::isfinite(o.neck_elevation_factor) && o.neck_elevation_factor >= 0 &&
+              std::isfinite(o.neck_max_boundary_shift) && o.neck_max_boundary_shift >= 0,
+          "max_neck_ratio, neck_bend_factor, neck_elevation_factor and neck_max_boundary_shift "
+          "must be finite and >= 0");
   Require(std::isfinite(o.sheet_smoothing_factor) && o.sheet_smoothing_factor >= 0 &&
               std::isfinite(o.sheet_bend_factor) && o.sheet_bend_factor >= 0 &&
               std::isfinite(o.max_sheet_edge_bias) && o.max_sheet_edge_bias >= 0,
@@ -111,6 +114,9 @@ Assignment ClusterPlant(const PointSet& set, const ClusterOptions& options, Clus
   neck_rule.min_side = min_points;
   neck_rule.bend_factor = options.neck_bend_factor;
   neck_rule.max_neck_ratio = options.max_neck_ratio;
+  neck_rule.elevation_factor = options.neck_elevation_factor;
+  neck_rule.max_boundary_shift = options.neck_max_boundary_shift;
+  neck_rule.refinement_rounds = options.refinement_rounds;
   SheetRule sheet_rule;
   sheet_rule.lanczos_steps = options.sheet_lanczos_steps;
   sheet_rule.min_side = min_points;

@@ -86,6 +86,23 @@ std::vector<float> EdgeBends(const std::vector<LocalEdge>& edges,
   return bends;
 }
 
+std::vector<float> EdgeElevations(const std::vector<LocalEdge>& edges,
+                                  const std::vector<Eigen::Vector3f>& points,
+                                  const std::vector<uint32_t>& cluster,
+                                  const std::vector<Eigen::Vector3f>& local_normals) {
+  std::vector<float> elevations(edges.size(), 0.0f);
+  for (size_t e = 0; e < edges.size(); ++e) {
+    const auto [a, b] = edges[e];
+    const Eigen::Vector3f d = points[cluster[b]] - points[cluster[a]];
+    const float squared_length = d.squaredNorm();
+    if (!(squared_length > 0.0f)) continue;
+    const float rise =
+        std::max(std::abs(d.dot(local_normals[a])), std::abs(d.dot(local_normals[b])));
+    elevations[e] = rise * rise / squared_length;
+  }
+  return elevations;
+}
+
 float UpperMedian(std::vector<float> values) {
   if (values.empty()) return 0.0f;
   const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);

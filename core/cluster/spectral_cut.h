@@ -34,6 +34,15 @@ ClusterGraph NeighbourGraph(const NeighbourLists& neighbours,
 std::vector<float> EdgeBends(const std::vector<LocalEdge>& edges,
                              const std::vector<Eigen::Vector3f>& local_normals);
 
+// Per edge, the squared sine of its steeper elevation above the two points' tangent planes,
+// max(|d . n_a|, |d . n_b|)^2 / |d|^2 with d the offset (0 for coincident points): small between
+// neighbours on one sheet (noise, curvature), large between two sheets that touch one above the
+// other's edge. points are indexed by cluster[vertex], normals locally.
+std::vector<float> EdgeElevations(const std::vector<LocalEdge>& edges,
+                                  const std::vector<Eigen::Vector3f>& points,
+                                  const std::vector<uint32_t>& cluster,
+                                  const std::vector<Eigen::Vector3f>& local_normals);
+
 // The element at position size / 2 after partial sorting (the upper median); 0 when empty.
 float UpperMedian(std::vector<float> values);
 

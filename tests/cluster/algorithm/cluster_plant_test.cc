@@ -245,6 +245,12 @@ TEST(ClusterPlant, BadInputIsRejectedWithAClearMessage) {
   ClusterOptions bad_options;
   bad_options.link_factor = 0;
   EXPECT_THROW(ClusterPlant(good, bad_options), std::invalid_argument);
+  for (double ClusterOptions::*field :
+       {&ClusterOptions::neck_elevation_factor, &ClusterOptions::neck_max_boundary_shift}) {
+    ClusterOptions negative;
+    negative.*field = -1;
+    EXPECT_THROW(ClusterPlant(good, negative), std::invalid_argument);
+  }
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <vector>
 
@@ -45,12 +46,15 @@ TEST(Table2Sets, SameSeedSameBytesOtherSeedOtherSets) {
   EXPECT_NE(a[0].points[0], c[0].points[0]);
 }
 
-// The acceptance is 100 % on every set. Measured with the overlapping-sheet split and
-// the local reassignment: every set gets exactly its true number of clusters, and 27 of the 30
-// set-seed pairs are at 100 % (to the displayed 0.1 %). What is left are strips of a few points of
-// one leaf left on the other side of a neck cut: seed 1 D (10 points), seed 2 F (8), seed 3 F (16),
-// and single points elsewhere. The floors pin today's figures so a regression fails; raise them
-// when the method improves.
+// The acceptance is 100 % on every set. Measured with the overlapping-sheet split, the
+// redrawn neck boundary and the local reassignment: every set gets exactly its true number of
+// clusters, and 26 of the 30 set-seed pairs have every point right. Left: seed 1 D, 4 points of a
+// wavy leaf margin at a neck (an island linked as steeply to both leaves, and points the
+// reassignment moves on planes of 3-5 points); one point each in seed 3 F (at a neck, on the
+// touching leaf's local plane within the noise), seed 3 E (at a crossing, within the noise of
+// both planes) and seed 2 D (a leaf sample 13 mm from any other point, beyond the link radius,
+// left an outlier). The floors pin today's figures so a regression fails; raise them when the
+// method improves.
 void ExpectScores(uint64_t seed, const std::vector<double>& floors) {
   const std::vector<PointSet> sets = Table2Sets(seed);
   for (size_t s = 0; s < sets.size(); ++s) {
@@ -63,15 +67,39 @@ void ExpectScores(uint64_t seed, const std::vector<double>& floors) {
   }
 }
 
-TEST(Table2Sets, ClusterPlantScoresSeed1) { ExpectScores(1, {1.0, 1.0, 1.0, 0.996, 1.0, 1.0}); }
+TEST(Table2Sets, ClusterPlantScoresSeed1) { ExpectScores(1, {1.0, 1.0, 1.0, 0.998, 1.0, 1.0}); }
 
-TEST(Table2Sets, ClusterPlantScoresSeed2) { ExpectScores(2, {1.0, 1.0, 1.0, 0.999, 1.0, 0.997}); }
+TEST(Table2Sets, ClusterPlantScoresSeed2) { ExpectScores(2, {1.0, 1.0, 1.0, 0.9996, 1.0, 1.0}); }
 
-TEST(Table2Sets, ClusterPlantScoresSeed3) { ExpectScores(3, {1.0, 1.0, 1.0, 1.0, 0.999, 0.994}); }
+TEST(Table2Sets, ClusterPlantScoresSeed3) { ExpectScores(3, {1.0, 1.0, 1.0, 1.0, 0.9996, 0.9996}); }
 
 TEST(Table2Sets, ClusterPlantScoresSeed4) { ExpectScores(4, {1.0, 1.0, 1.0, 1.0, 1.0, 1.0}); }
 
-TEST(Table2Sets, ClusterPlantScoresSeed5) { ExpectScores(5, {1.0, 1.0, 1.0, 1.0, 1.0, 0.999}); }
+TEST(Table2Sets, ClusterPlantScoresSeed5) { ExpectScores(5, {1.0, 1.0, 1.0, 1.0, 1.0, 1.0}); }
+
+int WrongPoints(const PointSet& set, const ClusterOptions& options) {
+  const double score = CorrectlyClusteredFraction(ClusterPlant(set, options), set.labels);
+  return static_cast<int>(std::lround((1.0 - score) * kTable2SurfacePoints));
+}
+
+// The strips a neck cut between touching leaves left with the other leaf (seed 1 D 10 points,
+// seed 2 F 8, seed 3 F 16): the redrawn boundary (ClusterOptions::neck_elevation_factor) gives
+// them back to their own leaf; without it they come back.
+TEST(Table2Sets, NeckBoundaryIsRedrawnWhereTheSurfaceSteps) {
+  struct Case {
+    uint64_t seed;
+    size_t set;
+    int wrong_now;
+    int wrong_without;
+  };
+  ClusterOptions without;
+  without.neck_elevation_factor = 0;
+  for (const Case& c : {Case{1, 3, 4, 10}, Case{2, 5, 0, 8}, Case{3, 5, 1, 16}}) {
+    const PointSet set = Table2Sets(c.seed)[c.set];
+    EXPECT_LE(WrongPoints(set, {}), c.wrong_now) << "seed " << c.seed << " set " << set.name;
+    EXPECT_EQ(WrongPoints(set, without), c.wrong_without) << "seed " << c.seed << " " << set.name;
+  }
+}
 
 }  // namespace
 }  // namespace avc::cluster
