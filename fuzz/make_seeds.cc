@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <avc/robot_command_t.hpp>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -296,7 +297,7 @@ void FileSeeds(const fs::path& source) {
 }
 
 // Signed as the robot_command target's verifier expects (key 0x5a.., cell0, a fixed clock so the
-// corpus is the same every time): a joint move, a plant keep-out, an unsigned stop.
+// corpus is the same every time): a joint move, a tool move, a plant keep-out, an unsigned stop.
 void RobotCommandSeeds() {
   const ManualClock clock(1'700'000'000'000'000);
   auth::CommandKey key;
@@ -311,6 +312,20 @@ void RobotCommandSeeds() {
   move.acceleration = 0.8;
   signer.Sign(move, "cell0/ROBOT_COMMAND");
   Seed("robot_command", "move_joints", Encode(move));
+
+  // A tool move: its pose a finite rigid transform, so the fuzzer starts inside the linear-move
+  // path (inverse kinematics along the line) instead of having to find a rotation.
+  avc::robot_command_t line{};
+  line.request_id = "move-2";
+  line.kind = avc::robot_command_t::KIND_MOVE_LINEAR;
+  Eigen::Isometry3d target = Eigen::Isometry3d::Identity();
+  target.linear() = Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  target.translation() = Eigen::Vector3d(0.4, 0.1, 0.3);
+  kinematics::RowMajorFromIsometry(target, line.T_base_flange);
+  line.speed = 0.1;
+  line.acceleration = 0.5;
+  signer.Sign(line, "cell0/ROBOT_COMMAND");
+  Seed("robot_command", "move_linear", Encode(line));
 
   avc::robot_command_t keep_out{};
   keep_out.request_id = "keep-out-1";
