@@ -139,6 +139,13 @@ std::string CheckJointMove(const SafetyEnvelope& envelope, const DhParameters& d
   return {};
 }
 
+bool JointPathAllowed(const std::optional<SafetyEnvelope>& envelope, const DhParameters& dh,
+                      const JointVector& from, const JointVector& to) {
+  return !envelope || CheckJointMove(*envelope, dh, from, to, envelope->max_joint_speed_rad_s,
+                                     envelope->max_joint_acceleration_rad_s2)
+                          .empty();
+}
+
 std::string CheckLinearMove(const SafetyEnvelope& envelope, const DhParameters& dh,
                             const JointVector& from, const Eigen::Isometry3d& T_base_flange,
                             double speed, double acceleration, JointVector* target_q) {

@@ -56,6 +56,12 @@ std::string CheckJointMove(const SafetyEnvelope& envelope, const DhParameters& d
                            const JointVector& from, const JointVector& to, double speed,
                            double acceleration);
 
+// For planners of moves (views, calibration poses), which choose their own speed: true when no
+// envelope is given or the joint-space path from `from` to `to` passes CheckJointMove at the
+// envelope's own caps.
+bool JointPathAllowed(const std::optional<SafetyEnvelope>& envelope, const DhParameters& dh,
+                      const JointVector& from, const JointVector& to);
+
 // The same for a straight tool move to T_base_flange; on success `target_q` (when given) holds
 // the IK solution nearest `from` that the move ends at.
 std::string CheckLinearMove(const SafetyEnvelope& envelope, const DhParameters& dh,

@@ -34,16 +34,6 @@ bool SeesWholeBoard(const sim::CellTruth& nominal, const sim::ChessboardSpec& bo
   return true;
 }
 
-// The arm driver would make the joint move (no envelope given: any move).
-bool Allowed(const CalibrationPlanOptions& options, const kinematics::DhParameters& dh,
-             const kinematics::JointVector& from, const kinematics::JointVector& to) {
-  return !options.envelope ||
-         kinematics::CheckJointMove(*options.envelope, dh, from, to,
-                                    options.envelope->max_joint_speed_rad_s,
-                                    options.envelope->max_joint_acceleration_rad_s2)
-             .empty();
-}
-
 Eigen::Isometry3d Rolled(const Eigen::Isometry3d& T_table_cam, double roll) {
   return T_table_cam * Eigen::Isometry3d(Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitZ()));
 }
@@ -75,7 +65,7 @@ CalibrationPlan PlanCalibration(const sim::CellTruth& nominal, const sim::Chessb
         roll);
     if (!SeesWholeBoard(nominal, board, T_table_cam, 0)) continue;
     const auto q = sim::JointsForCameraPose(nominal, T_table_cam, current);
-    if (!q || !Allowed(options, nominal.dh, current, *q)) continue;
+    if (!q || !kinematics::JointPathAllowed(options.envelope, nominal.dh, current, *q)) continue;
     plan.hand_eye.push_back(*q);
     current = *q;
   }
@@ -102,7 +92,7 @@ CalibrationPlan PlanCalibration(const sim::CellTruth& nominal, const sim::Chessb
       }
       if (!sees_all) continue;
       const auto q = sim::JointsForCameraPose(nominal, T_table_cam, current);
-      if (q && Allowed(options, nominal.dh, current, *q)) {
+      if (q && kinematics::JointPathAllowed(options.envelope, nominal.dh, current, *q)) {
         plan.turntable_pose = *q;
         return plan;
       }

@@ -43,12 +43,7 @@ std::optional<CellView> RealiseView(const sim::CellTruth& cell, const Eigen::Vec
     const Eigen::Isometry3d T_table_world = sim::TableFromWorld(cell, angle);
     const auto joints = sim::JointsLookingAt(cell, T_table_world * eye_world,
                                              T_table_world * target_world, current);
-    if (!joints) continue;
-    if (options.envelope &&
-        !kinematics::CheckJointMove(*options.envelope, cell.dh, current, *joints,
-                                    options.envelope->max_joint_speed_rad_s,
-                                    options.envelope->max_joint_acceleration_rad_s2)
-             .empty()) {
+    if (!joints || !kinematics::JointPathAllowed(options.envelope, cell.dh, current, *joints)) {
       continue;
     }
     CellView view;

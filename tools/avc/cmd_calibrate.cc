@@ -65,11 +65,7 @@ int RunCollect(const CalibrateArgs& args) {
   options.folder = args.folder;
   options.board = ParseBoard(args.board, args.square_m);
   options.plan = args.plan;
-  if (args.envelope.table_z || !args.envelope.keep_out.empty()) {
-    kinematics::SafetyEnvelope driver;
-    ApplyEnvelopeFlags(args.envelope, &driver);
-    options.plan.envelope = kinematics::PlanningEnvelope(driver);
-  }
+  options.plan.envelope = PlanningEnvelopeOf(args.envelope);
   if (args.table_in_base.size() == 3) {
     // The table frame is not rotated against the base for planning; only its place matters.
     options.planning_cell.T_base_table = Eigen::Isometry3d::Identity();

@@ -67,11 +67,7 @@ int RunScanCommand(const ScanArgs& args) {
   options.calibration_file = args.calibration;
   options.planner.max_views = args.max_views;
   options.planner.views_per_level = args.views_per_level;
-  if (args.envelope.table_z || !args.envelope.keep_out.empty()) {
-    kinematics::SafetyEnvelope driver;
-    ApplyEnvelopeFlags(args.envelope, &driver);
-    options.planner.reach.envelope = kinematics::PlanningEnvelope(driver);
-  }
+  options.planner.reach.envelope = PlanningEnvelopeOf(args.envelope);
   if (args.jpeg) options.capture.encoding = avc::image_t::ENCODING_JPEG;
   options.ready_timeout =
       std::chrono::milliseconds(static_cast<int64_t>(args.ready_timeout_s * 1e3));

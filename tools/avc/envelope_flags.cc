@@ -34,4 +34,11 @@ void ApplyEnvelopeFlags(const EnvelopeFlags& flags, kinematics::SafetyEnvelope* 
   }
 }
 
+std::optional<kinematics::SafetyEnvelope> PlanningEnvelopeOf(const EnvelopeFlags& flags) {
+  if (!flags.table_z && flags.keep_out.empty()) return std::nullopt;
+  kinematics::SafetyEnvelope driver;
+  ApplyEnvelopeFlags(flags, &driver);
+  return kinematics::PlanningEnvelope(driver);
+}
+
 }  // namespace avc::cli

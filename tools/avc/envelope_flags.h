@@ -24,4 +24,8 @@ void AddEnvelopeFlags(CLI::App* command, EnvelopeFlags* flags);
 // unset). Throws CLI::ValidationError when the result is not a usable envelope.
 void ApplyEnvelopeFlags(const EnvelopeFlags& flags, kinematics::SafetyEnvelope* envelope);
 
+// For avc scan and avc calibrate: the flags' envelope as a planner checks it
+// (kinematics::PlanningEnvelope), or none when neither --table-z nor --keep-out is given.
+std::optional<kinematics::SafetyEnvelope> PlanningEnvelopeOf(const EnvelopeFlags& flags);
+
 }  // namespace avc::cli
