@@ -44,7 +44,7 @@ double EstimateBoundaryBand(const std::vector<Cell>& cells, double spacing, doub
   const double mean_edge = outline / static_cast<double>(outline_edges);
   if (!(scale > 0.0)) {
     const double regularity = spacing / std::sqrt(2.0 * mean_area);
-    scale = 1.0 + std::clamp((1.0 - regularity) / 0.53, 0.0, 1.0);
+    scale = 1.0 + kRandomSamplingExtraBand * std::clamp((1.0 - regularity) / 0.53, 0.0, 1.0);
   }
   return scale * mean_area / mean_edge;
 }

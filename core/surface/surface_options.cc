@@ -48,6 +48,20 @@ void SurfaceOptions::Validate() const {
   RequirePositive(long_edge_factor, "long_edge_factor");
   RequirePositive(hole_perimeter_factor, "hole_perimeter_factor");
   RequirePositive(stitch_factor, "stitch_factor");
+  if (refine_subdivisions < 0 || refine_subdivisions > 3) {
+    throw std::invalid_argument(fmt::format(
+        "surface options: refine_subdivisions must be in [0, 3], got {}", refine_subdivisions));
+  }
+  RequirePositive(fit.radius_factor, "fit.radius_factor");
+  if (!(fit.max_radius_factor >= fit.radius_factor)) {
+    throw std::invalid_argument(fmt::format(
+        "surface options: fit.max_radius_factor must be >= fit.radius_factor ({}), got {}",
+        fit.radius_factor, fit.max_radius_factor));
+  }
+  if (fit.min_points < 3) {
+    throw std::invalid_argument(
+        fmt::format("surface options: fit.min_points must be >= 3, got {}", fit.min_points));
+  }
   if (!(min_boundary_quality >= 0.0 && min_boundary_quality < 1.0)) {
     throw std::invalid_argument(fmt::format(
         "surface options: min_boundary_quality must be in [0, 1), got {}", min_boundary_quality));

@@ -181,6 +181,10 @@ SurfaceResult ReconstructSurface(const ClusteredPoints& input, const SurfaceOpti
   for (Cell& cell : cells) {
     report.modifications += ModifyCellMesh(cell.mesh, options, thresholds);
     cell.source_points.resize(cell.mesh.vertices.size(), -1);
+    if (options.refine) {
+      report.refinement += RefineCell(cell, input.cloud.positions, spacing,
+                                      options.refine_subdivisions, options.fit);
+    }
   }
   report.area_modified = total_area(cells);
   std::erase_if(cells, [](const Cell& cell) { return cell.mesh.faces.empty(); });

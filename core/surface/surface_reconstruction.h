@@ -6,7 +6,8 @@
 //          the band the sampling leaves there. It stands where the paper's image-driven level
 //          sets go (issue 9); Cell keeps its plane and per-vertex sources for them.
 //  Phase 3 (mesh_modifications.h): long triangles and slivers removed, small holes filled,
-//          Laplacian smoothing (interior, then boundary).
+//          Laplacian smoothing (interior, then boundary); then each cell subdivided and moved
+//          onto the surface fitted to its samples (surface_refinement.h).
 //  Phase 4 (cell_merging.h): neighbouring cells stitched into a connected surface; the holes
 //          left where several cells meet are filled, then a final smoothing.
 // Thresholds are multiples of the measured point spacing (surface_options.h). The output's
@@ -22,6 +23,7 @@
 #include "core/surface/clustered_points.h"
 #include "core/surface/mesh_modifications.h"
 #include "core/surface/surface_options.h"
+#include "core/surface/surface_refinement.h"
 
 namespace avc::surface {
 
@@ -35,6 +37,7 @@ struct SurfaceReport {
   size_t phase1_faces = 0;     // Delaunay triangles kept by alpha
   size_t grown_vertices = 0;   // outline vertices added by the boundary growth
   ModificationStats modifications;
+  RefinementStats refinement;
   StitchStats stitching;
   size_t merged_holes_filled = 0;
   size_t fragments_removed = 0;  // pieces below min_component_faces

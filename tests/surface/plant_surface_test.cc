@@ -119,14 +119,15 @@ Figures Measure(sim::PlantPreset preset, uint32_t seed, bool clustered) {
 
 class PlantSurfaceTest : public ::testing::TestWithParam<sim::PlantPreset> {};
 
-// One cluster per leaf: the targets (area ratio 0.9-1.1; RMSE well under the 3 mm
-// spacing) are met on every preset. Connectivity: the share of leaves with >= 95 % of their
-// area in one piece (the rosette's crossing leaf bases keep it at 0.83-0.89 for seeds 1-3).
+// One cluster per leaf: the targets (area ratio 0.9-1.1; RMSE below CGAL's advancing
+// front, 0.42-0.75 mm in `avc bench surface`) are met on every preset. Connectivity: the share of
+// leaves with >= 95 % of their area in one piece (the rosette's crossing leaf bases keep it at
+// 0.83-0.89 for seeds 1-3).
 TEST_P(PlantSurfaceTest, LeafClusters) {
   const Figures figures = Measure(GetParam(), 1, false);
   EXPECT_GE(figures.area_ratio, 0.9);
   EXPECT_LE(figures.area_ratio, 1.1);
-  EXPECT_LT(figures.rmse, 0.001);
+  EXPECT_LT(figures.rmse, 0.0006);  // 0.26-0.48 mm measured; 0.64-0.90 without the refinement
   EXPECT_GE(figures.mostly_connected_fraction, 0.8);
 }
 

@@ -1,6 +1,6 @@
 // The surfacer's phases one by one on small meshes with known answers: boundary loops, hole
 // filling, sliver and long-triangle removal, Laplacian smoothing, Phase 1 triangulation (incl.
-// the fold split), boundary growth and stitching.
+// the fold split), boundary growth, stitching, subdivision and the fitted-surface projection.
 
 #include <gtest/gtest.h>
 
@@ -12,8 +12,10 @@
 
 #include "core/surface/boundary_growth.h"
 #include "core/surface/cell_merging.h"
+#include "core/surface/fitted_surface.h"
 #include "core/surface/hole_filling.h"
 #include "core/surface/laplacian_smoothing.h"
+#include "core/surface/mesh_subdivision.h"
 #include "core/surface/mesh_topology.h"
 #include "core/surface/triangle_cleanup.h"
 #include "core/surface/triangulate_cell.h"
@@ -219,6 +221,91 @@ TEST(CellMerging, StackedSheetsAreNotWalledTogether) {
   const StitchStats stats = StitchCells(
       mesh, vertex_cell, {Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitZ()}, {0, 1}, 1.6, 60.0);
   EXPECT_EQ(stats.faces, 0u);
+}
+
+}  // namespace
+}  // namespace avc::surface
+
+namespace avc::surface {
+namespace {
+
+TEST(MeshSubdivision, EveryFaceBecomesFourSharingEdgeMidpoints) {
+  geometry::Mesh mesh = Grid(1);  // 4 vertices, 2 faces, 5 edges
+  mesh.colors.assign(4, {10, 20, 30});
+  mesh.colors[1] = {11, 21, 31};
+  std::vector<int32_t> sources = {0, 1, 2, 3};
+  const double area = geometry::SurfaceArea(mesh);
+  EXPECT_EQ(SubdivideMidpoints(mesh, &sources), 5u);
+  EXPECT_EQ(mesh.Validate(), "");
+  ASSERT_EQ(mesh.vertices.size(), 9u);
+  EXPECT_EQ(mesh.faces.size(), 8u);
+  EXPECT_EQ(mesh.face_labels, std::vector<int32_t>(8, 0));
+  EXPECT_EQ(sources, (std::vector<int32_t>{0, 1, 2, 3, -1, -1, -1, -1, -1}));
+  EXPECT_NEAR(geometry::SurfaceArea(mesh), area, 1e-6);
+  // The shared diagonal's midpoint is one vertex: still one outer loop, no holes, all faces up.
+  EXPECT_EQ(BoundaryLoops(mesh).size(), 1u);
+  for (const Eigen::Vector3i& t : mesh.faces) {
+    const Eigen::Vector3f n = (mesh.vertices[t[1]] - mesh.vertices[t[0]])
+                                  .cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]);
+    EXPECT_GT(n.z(), 0.0f);
+  }
+  EXPECT_EQ(mesh.colors[4], (Eigen::Matrix<uint8_t, 3, 1>(11, 21, 31)));  // (10+11+1)/2 ...
+}
+
+// Samples 3 mm apart on a cylinder of radius 15 mm (a curled leaf): between samples the chords
+// sag by 0.075-0.15 mm, the fitted surface follows the cylinder; with 0.2 mm noise per axis the
+// projection stays within the noise of one sample. Queries move along the local normal.
+double WorstOffCylinder(double noise, double* rms) {
+  const double r = 0.015;
+  std::mt19937_64 rng(11);
+  std::vector<Eigen::Vector3f> points;
+  for (int i = -8; i <= 8; ++i) {
+    for (int j = -8; j <= 8; ++j) {
+      const double phi = 0.003 * i / r;
+      const Eigen::Vector3d p(r * std::sin(phi), 0.003 * j, r * std::cos(phi));
+      const Eigen::Vector3d jitter(test::Gaussian(rng), test::Gaussian(rng), test::Gaussian(rng));
+      points.push_back((p + noise * jitter).cast<float>());
+    }
+  }
+  const FittedSurface surface(points, Eigen::Vector3d(0.3, 0.0, 1.0), 0.003);
+  double worst = 0.0, sum = 0.0;
+  int n = 0;
+  for (const double phi : {-0.5, -0.1, 0.0137, 0.1, 0.3}) {  // midway between sample columns too
+    for (const double y : {-0.0045, 0.0015, 0.0041}) {
+      for (const double offset : {-0.002, 0.0, 0.0015}) {  // off the sheet along its normal
+        const Eigen::Vector3f query =
+            Eigen::Vector3d((r + offset) * std::sin(phi), y, (r + offset) * std::cos(phi))
+                .cast<float>();
+        const auto projected = surface.Project(query);
+        EXPECT_TRUE(projected.has_value());
+        if (!projected) continue;
+        const double off = std::abs(std::hypot(projected->x(), projected->z()) - r);
+        worst = std::max(worst, off);
+        sum += off * off;
+        ++n;
+        EXPECT_NEAR(std::atan2(projected->x(), projected->z()), phi, 0.02);
+      }
+    }
+  }
+  *rms = std::sqrt(sum / n);
+  return worst;
+}
+
+TEST(FittedSurface, FollowsACurledSheetBetweenItsSamples) {
+  double rms = 0.0;
+  EXPECT_LT(WorstOffCylinder(0.0, &rms), 0.00002);  // 0.02 mm, against chords sagging 0.075+
+  EXPECT_LT(WorstOffCylinder(0.0002, &rms), 0.0004);
+  EXPECT_LT(rms, 0.0002);  // within one sample's noise
+}
+
+TEST(FittedSurface, TooFewSamplesNearLeaveTheVertexAlone) {
+  const std::vector<Eigen::Vector3f> points = {{0, 0, 0}, {0.003f, 0, 0}, {0, 0.003f, 0}};
+  const FittedSurface surface(points, Eigen::Vector3d::UnitZ(), 0.003);
+  EXPECT_FALSE(surface.Project({1.0f, 1.0f, 1.0f}).has_value());  // nothing within reach
+  const auto flat = surface.Project({0.001f, 0.001f, 0.002f});    // three: the plane
+  ASSERT_TRUE(flat.has_value());
+  EXPECT_NEAR(flat->z(), 0.0f, 1e-6f);
+  EXPECT_NEAR(flat->x(), 0.001f, 1e-6f);
 }
 
 }  // namespace

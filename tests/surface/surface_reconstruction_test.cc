@@ -88,6 +88,23 @@ TEST(SurfaceReconstruction, CylindricalSheetKeepsItsArea) {
   EXPECT_LT(worst, 0.001);
 }
 
+// The fitted-surface refinement subdivides every cell and moves every vertex onto its fit.
+TEST(SurfaceReconstruction, RefinementSubdividesAndProjectsEveryVertex) {
+  const ClusteredPoints points = test::CylinderSheet(0.04, std::numbers::pi / 2, 0.06, 3000, 5);
+  SurfaceOptions flat;
+  flat.refine = false;
+  const SurfaceResult refined = ReconstructSurface(points);
+  const SurfaceResult unrefined = ReconstructSurface(points, flat);
+  // Kept: vertices of faces Phase 3 removed, far from every sample (dropped at the end).
+  EXPECT_LT(refined.report.refinement.vertices_kept,
+            0.01 * refined.report.refinement.vertices_projected);
+  EXPECT_EQ(unrefined.report.refinement.vertices_projected, 0u);
+  EXPECT_GT(refined.report.refinement.vertices_added, unrefined.mesh.vertices.size());
+  EXPECT_GT(refined.mesh.faces.size(), 3 * unrefined.mesh.faces.size());
+  EXPECT_NEAR(geometry::SurfaceArea(refined.mesh), geometry::SurfaceArea(unrefined.mesh),
+              0.01 * geometry::SurfaceArea(unrefined.mesh));
+}
+
 TEST(SurfaceReconstruction, TwoTouchingClustersBecomeOneComponent) {
   ClusteredPoints points = test::SpiralDisc(kRadius, 3000);
   for (size_t i = 0; i < points.clusters.size(); ++i) {

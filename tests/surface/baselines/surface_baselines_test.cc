@@ -36,13 +36,14 @@ struct Baseline {
 
 // Expected ranges from algorithms.md §4.3/4.4 on open sheets: the interpolating meshers leave
 // holes and the disc's rim (below 1), trimmed Poisson over-extends past the rim (above 1), the
-// patches leave gaps between them.
+// patches leave gaps between them (and grow by the surfacer's band, which on a random disc
+// closes a little less than the missing rim: boundary_growth.h kRandomSamplingExtraBand).
 std::vector<Baseline> Baselines() {
   return {
       {"poisson", [](const auto& c) { return PoissonTrimmed(c); }, 0.9, 1.35, 0.002},
       {"greedy projection", [](const auto& c) { return GreedyProjection(c); }, 0.6, 1.0, 1e-6},
       {"advancing front", [](const auto& c) { return AdvancingFront(c); }, 0.65, 1.0, 1e-6},
-      {"pound", [](const auto& c) { return PoundPatches(c); }, 0.8, 1.05, 1e-6},
+      {"pound", [](const auto& c) { return PoundPatches(c); }, 0.75, 1.05, 1e-6},
   };
 }
 
