@@ -41,7 +41,8 @@ void RegisterSurfacer(CLI::App& root, int* exit_code) {
       "surfacer",
       "Run the avc-surfacer service. Triangulates every clusters product (PRODUCT/CLUSTERS)\n"
       "into one connected mesh (the paper's Algorithm 3: cells on each cluster's regression\n"
-      "plane, boundary growth, mesh repairs and smoothing, cell merging) and publishes it on\n"
+      "plane, boundary growth, mesh repairs and smoothing, refinement onto the surface fitted to\n"
+      "each cluster's points, cell merging) and publishes it on\n"
       "PRODUCT/MESH as a binary PLY (per-face label = cluster id, per-vertex colours), one\n"
       "answer per clusters product (an empty mesh when nothing could be surfaced; the reason\n"
       "is logged and in the heartbeat).");
@@ -55,6 +56,16 @@ void RegisterSurfacer(CLI::App& root, int* exit_code) {
   command
       ->add_option("--stitch-factor", surface.stitch_factor, "Phase 4 stitch distance in spacings")
       ->capture_default_str();
+  command
+      ->add_option("--refine-subdivisions", surface.refine_subdivisions,
+                   "1-to-4 subdivisions of each cell before its vertices are moved onto the "
+                   "surface fitted to its points (0: same face count as the triangulation)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 3));
+  command->add_flag(
+      "--no-refine", [args](int64_t) { args->node.surfacing.surface.refine = false; },
+      "keep the piecewise-flat mesh through the points (no fitted-surface "
+      "refinement)");
   command->add_option("--ground-z", args->node.surfacing.traits.ground_z,
                       "height of the ground in m that plant height is measured from (default: "
                       "the mesh's lowest point)");
