@@ -50,6 +50,7 @@ void CheckOptions(const ClusterOptions& o) {
               o.min_normal_gain >= 0,
           "link_factor and bin_factor must be > 0; noise_factor, flatness_ratio and "
           "min_normal_gain >= 0");
+  Require(std::isfinite(o.link_mean_slope), "link_mean_slope must be finite (< 0: not used)");
   Require(o.min_cluster_points >= 0 && o.refinement_rounds >= 0 && o.reassignment_rounds >= 0,
           "min_cluster_points, refinement_rounds and reassignment_rounds must be >= 0");
   Require(o.neck_neighbours >= 1 && o.neck_lanczos_steps >= 2 && o.sheet_lanczos_steps >= 2,
@@ -107,6 +108,7 @@ Assignment ClusterPlant(const PointSet& set, const ClusterOptions& options, Clus
   link.normals = &normals;
   link.slope = static_cast<float>(options.link_slope);
   link.allowance = static_cast<float>(noise_tolerance);
+  link.mean_slope = static_cast<float>(options.link_mean_slope);
   const NeighbourLists neighbours(grid, points, link);
   NeckRule neck_rule;
   neck_rule.neighbours = options.neck_neighbours;

@@ -35,6 +35,7 @@
 
 #include <cstddef>
 
+#include "core/cluster/connected_components.h"
 #include "core/cluster/point_set.h"
 
 namespace avc::cluster {
@@ -48,6 +49,11 @@ struct ClusterOptions {
   // ... and on the same local surface: their offset rises at most asin(link_slope) above both
   // tangent planes, beyond noise_factor * noise (connected_components.h).
   double link_slope = 0.5;
+  // ... and near the plane normal to the bisector of their two normals: the offset rises at most
+  // asin(link_mean_slope) above it, beyond the same allowance (< 0: no such test). A chord of a
+  // smoothly bent sheet is perpendicular to that bisector; between stacked leaves facing the
+  // same way it runs along it (connected_components.h).
+  double link_mean_slope = kSameSurfaceMeanSlope;
   // 1-D bin width of the normal split, in spacings.
   double bin_factor = 2.0;
   // Normal constraint: flat when sqrt(lambda_min) <= noise_factor * noise ...

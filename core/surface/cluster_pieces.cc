@@ -22,6 +22,7 @@ std::vector<std::vector<uint32_t>> SplitIntoPieces(const ClusteredPoints& input,
   rule.radius = static_cast<float>(link_radius);
   rule.normals = normals.empty() ? nullptr : &normals;
   rule.allowance = static_cast<float>(allowance);
+  rule.mean_slope = cluster::kSameSurfaceMeanSlope;  // as the clusterer: stacked leaves apart
   const cluster::PointGrid grid(points, rule.radius);
   std::vector<uint32_t> local(members.size());
   std::iota(local.begin(), local.end(), 0u);

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/cluster/connected_components.h"
 #include "core/cluster/scoring.h"
 #include "tests/cluster/algorithm/synthetic_sheets.h"
 
@@ -63,6 +64,28 @@ TEST(ClusterPlant, StackedParallelPlanesAreSeparatedAlthoughWithinLinkRadius) {
   const Assignment assignment = ClusterPlant(set, {}, &report);
   ASSERT_GT(report.link_radius, 0.003);  // the layers are closer than the link radius
   EXPECT_DOUBLE_EQ(CorrectlyClusteredFraction(assignment, set.labels), 1.0);
+}
+
+// The bisector test: two points of stacked sheets facing the same way (3 mm apart, 8 mm across)
+// pass the per-point slope test but not the bisector one; two points 8 mm apart on a sheet
+// curled at a 15 mm radius (normals 31 deg apart, chord 2.1 mm off each tangent plane) pass both.
+TEST(LinkRule, BisectorSeparatesStackedSheetsNotCurledOnes) {
+  const float r = 0.015f, half = 0.26f;  // half the angle between the curled points' normals
+  const std::vector<Eigen::Vector3f> points = {{0, 0, 0},
+                                               {0.008f, 0, 0.003f},  // stacked
+                                               {-r * std::sin(half), 0, r * std::cos(half)},
+                                               {r * std::sin(half), 0, r * std::cos(half)}};
+  const std::vector<Eigen::Vector3f> normals = {Eigen::Vector3f::UnitZ(), Eigen::Vector3f::UnitZ(),
+                                                points[2] / r, points[3] / r};
+  LinkRule rule;
+  rule.radius = 0.012f;
+  rule.normals = &normals;
+  rule.allowance = 0.0006f;
+  EXPECT_TRUE(rule.Linked(points, 0, 1));  // slope 0.35 < 0.5: the old rule links them
+  EXPECT_TRUE(rule.Linked(points, 2, 3));
+  rule.mean_slope = kSameSurfaceMeanSlope;
+  EXPECT_FALSE(rule.Linked(points, 0, 1));
+  EXPECT_TRUE(rule.Linked(points, 2, 3));
 }
 
 TEST(ClusterPlant, BentSheetIsSplitByTheNormalConstraint) {

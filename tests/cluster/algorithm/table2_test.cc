@@ -84,7 +84,9 @@ int WrongPoints(const PointSet& set, const ClusterOptions& options) {
 
 // The strips a neck cut between touching leaves left with the other leaf (seed 1 D 10 points,
 // seed 2 F 8, seed 3 F 16): the redrawn boundary (ClusterOptions::neck_elevation_factor) gives
-// them back to their own leaf; without it they come back.
+// them back to their own leaf; without it (and without the bisector link test, which since
+// keeps two of the three strips apart before any cut: 3, 0 and 1 points wrong without the
+// redrawing) they come back.
 TEST(Table2Sets, NeckBoundaryIsRedrawnWhereTheSurfaceSteps) {
   struct Case {
     uint64_t seed;
@@ -94,6 +96,7 @@ TEST(Table2Sets, NeckBoundaryIsRedrawnWhereTheSurfaceSteps) {
   };
   ClusterOptions without;
   without.neck_elevation_factor = 0;
+  without.link_mean_slope = -1;
   for (const Case& c : {Case{1, 3, 4, 10}, Case{2, 5, 0, 8}, Case{3, 5, 1, 16}}) {
     const PointSet set = Table2Sets(c.seed)[c.set];
     EXPECT_LE(WrongPoints(set, {}), c.wrong_now) << "seed " << c.seed << " set " << set.name;
