@@ -4,6 +4,7 @@
 
 #include "core/dataset/dataset_reader.h"
 #include "core/geometry/mesh_io.h"
+#include "core/surface/surface_images_io.h"
 #include "services/builder/build_report.h"
 #include "services/builder/reconstruction_output.h"
 #include "services/clusterer/cluster_folder.h"
@@ -38,7 +39,9 @@ messages::ClustersContent ClusterModel(const std::filesystem::path& model_dir,
 
 surfacer::SurfacerResult SurfaceModel(const messages::ClustersContent& clusters,
                                       const std::filesystem::path& model_dir) {
-  surfacer::SurfacerResult surface = surfacer::SurfaceClusters(clusters);
+  // The masks BuildModel wrote drive Phase 2's growth (a model without them: the band growth).
+  const surface::SurfaceImages images = surface::ReadSurfaceImages(model_dir);
+  surfacer::SurfacerResult surface = surfacer::SurfaceClusters(clusters, {}, &images);
   if (!surface.problem.empty()) {
     throw std::runtime_error("no surface could be made: " + surface.problem);
   }

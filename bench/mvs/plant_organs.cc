@@ -1,5 +1,9 @@
 #include "bench/mvs/plant_organs.h"
 
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <limits>
+
 namespace avc::bench {
 
 geometry::Mesh PlantOrgans(const geometry::Mesh& mesh) {
@@ -15,6 +19,26 @@ geometry::Mesh PlantOrgans(const geometry::Mesh& mesh) {
     }
   }
   return plant;
+}
+
+TruthTraits MeasureTruthTraits(const geometry::Mesh& organs) {
+  TruthTraits truth;
+  double low = std::numeric_limits<double>::infinity();
+  double high = -low;
+  for (size_t f = 0; f < organs.faces.size(); ++f) {
+    const Eigen::Vector3i& t = organs.faces[f];
+    for (int k = 0; k < 3; ++k) {
+      low = std::min(low, static_cast<double>(organs.vertices[t[k]].z()));
+      high = std::max(high, static_cast<double>(organs.vertices[t[k]].z()));
+    }
+    if (organs.face_labels.empty() || !geometry::labels::IsLeaf(organs.face_labels[f])) continue;
+    const Eigen::Vector3d a = organs.vertices[t[0]].cast<double>();
+    truth.leaf_area += 0.5 * (organs.vertices[t[1]].cast<double>() - a)
+                                 .cross(organs.vertices[t[2]].cast<double>() - a)
+                                 .norm();
+  }
+  truth.height = high > low ? high - low : 0.0;
+  return truth;
 }
 
 }  // namespace avc::bench

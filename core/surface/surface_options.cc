@@ -74,6 +74,20 @@ void SurfaceOptions::Validate() const {
     throw std::invalid_argument(fmt::format(
         "surface options: min_component_faces must be >= 0, got {}", min_component_faces));
   }
+  RequirePositive(image_growth.max_growth_factor, "image_growth.max_growth_factor");
+  RequirePositive(image_growth.grid_factor, "image_growth.grid_factor");
+  RequirePositive(image_growth.smoothing_factor, "image_growth.smoothing_factor");
+  if (!(image_growth.edge_tolerance_px >= 0.0 && std::isfinite(image_growth.edge_tolerance_px))) {
+    throw std::invalid_argument(
+        fmt::format("surface options: image_growth.edge_tolerance_px must be >= 0, got {}",
+                    image_growth.edge_tolerance_px));
+  }
+  if (image_growth.min_plant_views < 1 || image_growth.min_background_views < 1) {
+    throw std::invalid_argument(fmt::format(
+        "surface options: image_growth.min_plant_views and min_background_views must be >= 1, "
+        "got {} and {}",
+        image_growth.min_plant_views, image_growth.min_background_views));
+  }
   ValidateSmoothing(cell_smoothing, "cell_smoothing");
   ValidateSmoothing(final_smoothing, "final_smoothing");
 }

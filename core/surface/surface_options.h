@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/surface/fitted_surface.h"
+#include "core/surface/image_growth_options.h"
 
 namespace avc::surface {
 
@@ -38,10 +39,12 @@ struct SurfaceOptions {
   // cutting the convex hull's long boundary slivers and wide concavities.
   double alpha_factor = 4.0;
 
-  // Phase 2 (stand-in until the image-driven level sets exist, boundary_growth.h): outlines not
-  // near another cell grow by the band the sampling leaves at a surface's edge, estimated from
-  // the triangulation, times growth_scale (<= 0: chosen from the sampling's regularity).
+  // Phase 2. With images (image_growth.h, when the caller gives them): a level set over each
+  // cell's plane driven by the plant masks. Without (boundary_growth.h): outlines not near
+  // another cell grow by the band the sampling leaves at a surface's edge, estimated from the
+  // triangulation, times growth_scale (<= 0: chosen from the sampling's regularity).
   bool grow_boundary = true;
+  ImageGrowthOptions image_growth;
   double growth_scale = 0;
   // An outline vertex with a point of another cell closer than this many spacings (about one
   // sampling step: the two surfaces continue into each other) does not grow: the gap there is

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <limits>
 #include <stdexcept>
 
 #include "core/cluster/data_scale.h"
@@ -9,6 +11,7 @@
 #include "core/surface/boundary_growth.h"
 #include "core/surface/cluster_pieces.h"
 #include "core/surface/hole_filling.h"
+#include "core/surface/image_growth.h"
 #include "core/surface/laplacian_smoothing.h"
 #include "core/surface/mesh_topology.h"
 #include "core/surface/triangulate_cell.h"
@@ -97,9 +100,10 @@ std::vector<Cell> TriangulateClusters(const ClusteredPoints& input, const Cluste
   return cells;
 }
 
-// Phase 2 stand-in: outlines away from other cells grow by the sampling's edge band.
-void GrowCells(std::vector<Cell>& cells, const UsablePoints& usable, SurfaceThresholds& thresholds,
-               double growth_scale, SurfaceReport* report) {
+// Phase 2 stand-in without images: outlines away from other cells grow by the sampling's edge
+// band.
+void GrowCellsByBand(std::vector<Cell>& cells, const UsablePoints& usable,
+                     SurfaceThresholds& thresholds, double growth_scale, SurfaceReport* report) {
   thresholds.growth_band = EstimateBoundaryBand(cells, thresholds.spacing, growth_scale);
   if (!(thresholds.growth_band > 0.0)) return;
   const float reach = static_cast<float>(thresholds.growth_clearance);
@@ -115,6 +119,41 @@ void GrowCells(std::vector<Cell>& cells, const UsablePoints& usable, SurfaceThre
     };
     const GrowthStats stats = GrowOuterBoundary(cell, thresholds.growth_band, is_free);
     report->grown_vertices += stats.vertices;
+  }
+}
+
+// A point nearer another cell than this many growth clearances' worth of its own samples is
+// that cell's to cover: beyond it, only a point of another cell within the clearance is.
+constexpr double kClaimRadiusFactor = 2.0;
+
+// Phase 2 with images (image_growth.h): each cell grows as a level set over its plane where
+// the masks see plant, stopping at background, at its neighbours and after the growth limit.
+void GrowCellsWithImages(std::vector<Cell>& cells, const ClusteredPoints& input,
+                         const UsablePoints& usable, const SurfaceImages& images,
+                         const SurfaceOptions& options, const SurfaceThresholds& thresholds,
+                         SurfaceReport* report) {
+  const ImageEvidence evidence(images, options.image_growth);
+  report->image_views = evidence.views();
+  const float clearance = static_cast<float>(thresholds.growth_clearance);
+  const float claim_radius = static_cast<float>(kClaimRadiusFactor) * clearance;
+  const cluster::PointGrid grid(usable.positions, clearance);
+  for (size_t c = 0; c < cells.size(); ++c) {
+    const auto claimed_elsewhere = [&](const Eigen::Vector3d& point) {
+      float own = std::numeric_limits<float>::infinity();
+      float other = own;
+      const Eigen::Vector3f p = point.cast<float>();
+      grid.ForEachWithin(p, claim_radius, [&](uint32_t j) {
+        const float d = (usable.positions[j] - p).squaredNorm();
+        float& nearest = usable.cell[j] == static_cast<int>(c) ? own : other;
+        nearest = std::min(nearest, d);
+      });
+      return other <= clearance * clearance || other < own;
+    };
+    const ImageGrowthStats stats =
+        GrowCellWithImages(cells[c], input.cloud.positions, evidence, claimed_elsewhere,
+                           thresholds.spacing, thresholds.alpha, options.fit, options.image_growth);
+    report->image_growth += stats;
+    report->grown_vertices += stats.vertices_added;
   }
 }
 
@@ -154,7 +193,8 @@ geometry::Mesh MergeCells(const std::vector<Cell>& cells, const SurfaceOptions& 
 
 }  // namespace
 
-SurfaceResult ReconstructSurface(const ClusteredPoints& input, const SurfaceOptions& options) {
+SurfaceResult ReconstructSurface(const ClusteredPoints& input, const SurfaceOptions& options,
+                                 const SurfaceImages* images) {
   options.Validate();
   SurfaceResult result;
   SurfaceReport& report = result.report;
@@ -176,7 +216,13 @@ SurfaceResult ReconstructSurface(const ClusteredPoints& input, const SurfaceOpti
   };
   std::vector<Cell> cells = TriangulateClusters(input, members, thresholds, &usable, &report);
   report.area_triangulated = total_area(cells);
-  if (options.grow_boundary) GrowCells(cells, usable, thresholds, options.growth_scale, &report);
+  if (options.grow_boundary) {
+    if (images != nullptr && !images->views.empty() && options.image_growth.enabled) {
+      GrowCellsWithImages(cells, input, usable, *images, options, thresholds, &report);
+    } else {
+      GrowCellsByBand(cells, usable, thresholds, options.growth_scale, &report);
+    }
+  }
   report.area_grown = total_area(cells);
   for (Cell& cell : cells) {
     report.modifications += ModifyCellMesh(cell.mesh, options, thresholds);

@@ -2,9 +2,9 @@
 
 // The surfacer (paper §4, Algorithm 3) from a clustered merged point cloud to one mesh:
 //  Phase 1 (triangulate_cell.h): each cluster triangulated on its regression plane -> a cell.
-//  Phase 2 (boundary_growth.h): a geometric growth of each outline along its cell's plane closes
-//          the band the sampling leaves there. It stands where the paper's image-driven level
-//          sets go (issue 9); Cell keeps its plane and per-vertex sources for them.
+//  Phase 2 (image_growth.h): with the scan's images, each cell's outline grows as a level set
+//          over its plane where the plant masks see leaf, up to its neighbours; without images
+//          (boundary_growth.h), outlines grow by the band the sampling leaves at an edge.
 //  Phase 3 (mesh_modifications.h): long triangles and slivers removed, small holes filled,
 //          Laplacian smoothing (interior, then boundary); then each cell subdivided and moved
 //          onto the surface fitted to its samples (surface_refinement.h).
@@ -21,6 +21,8 @@
 #include "core/geometry/mesh.h"
 #include "core/surface/cell_merging.h"
 #include "core/surface/clustered_points.h"
+#include "core/surface/image_evidence.h"
+#include "core/surface/image_growth.h"
 #include "core/surface/mesh_modifications.h"
 #include "core/surface/surface_options.h"
 #include "core/surface/surface_refinement.h"
@@ -35,7 +37,9 @@ struct SurfaceReport {
   size_t cells = 0;            // triangulated pieces of clusters (cell.h)
   size_t points_left_out = 0;  // usable points in pieces that could not be triangulated
   size_t phase1_faces = 0;     // Delaunay triangles kept by alpha
-  size_t grown_vertices = 0;   // outline vertices added by the boundary growth
+  size_t grown_vertices = 0;   // vertices added by the growth (either kind)
+  size_t image_views = 0;      // views Phase 2 grew with (0: the band growth without images)
+  ImageGrowthStats image_growth;
   ModificationStats modifications;
   RefinementStats refinement;
   StitchStats stitching;
@@ -61,7 +65,10 @@ struct SurfaceResult {
 
 // Throws std::invalid_argument for inconsistent input (clustered_points.h) or invalid options.
 // Input that cannot be surfaced (no cluster with 3 usable points, collinear clusters, NaNs)
-// gives warnings and a mesh of whatever could be made, possibly empty.
-SurfaceResult ReconstructSurface(const ClusteredPoints& input, const SurfaceOptions& options = {});
+// gives warnings and a mesh of whatever could be made, possibly empty. images: the scan's views
+// with plant masks for Phase 2 (nullptr or none: the band growth); a mask that does not fit its
+// camera throws std::invalid_argument naming the view.
+SurfaceResult ReconstructSurface(const ClusteredPoints& input, const SurfaceOptions& options = {},
+                                 const SurfaceImages* images = nullptr);
 
 }  // namespace avc::surface

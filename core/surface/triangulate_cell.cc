@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "core/cluster/pca.h"
+#include "core/surface/circumradius.h"
 #include "core/surface/delaunay_2d.h"
 
 namespace avc::surface {
@@ -27,23 +28,6 @@ PlaneFrame RegressionPlane(const ClusteredPoints& input, const std::vector<uint3
   const double agreement = normal.dot(normal_sum);
   if (agreement < 0.0 || (agreement == 0.0 && normal.z() < 0.0)) normal = -normal;
   return MakePlaneFrame(axes.centroid, normal, axes.LongestAxis());
-}
-
-// Circumradius of a triangle in 2-D or 3-D: abc / (4 area); infinite when degenerate.
-template <int N>
-double Circumradius(const Eigen::Matrix<double, N, 1>& a, const Eigen::Matrix<double, N, 1>& b,
-                    const Eigen::Matrix<double, N, 1>& c) {
-  const double ab = (b - a).norm();
-  const double bc = (c - b).norm();
-  const double ca = (a - c).norm();
-  // Heron's formula in its stable form (sides sorted), valid in any dimension.
-  double x = ab, y = bc, z = ca;
-  if (x < y) std::swap(x, y);
-  if (x < z) std::swap(x, z);
-  if (y < z) std::swap(y, z);
-  const double product = (x + (y + z)) * (z - (x - y)) * (z + (x - y)) * (x + (y - z));
-  if (!(product > 0.0)) return std::numeric_limits<double>::infinity();
-  return ab * bc * ca / std::sqrt(product);
 }
 
 constexpr double kClearlyFlatter = 0.5;

@@ -19,7 +19,8 @@ std::string JoinWarnings(const std::vector<std::string>& warnings) {
 }  // namespace
 
 SurfacerResult SurfaceClusters(const messages::ClustersContent& clusters,
-                               const SurfacerOptions& options) {
+                               const SurfacerOptions& options,
+                               const surface::SurfaceImages* images) {
   SurfacerResult result;
   result.cloud_id = clusters.cloud_id;
   const std::string what = fmt::format("clusters of '{}'", clusters.cloud_id);
@@ -31,7 +32,7 @@ SurfacerResult SurfaceClusters(const messages::ClustersContent& clusters,
   input.cloud = clusters.merged.cloud;
   input.clusters = clusters.clusters;
   try {
-    surface::SurfaceResult surface = surface::ReconstructSurface(input, options.surface);
+    surface::SurfaceResult surface = surface::ReconstructSurface(input, options.surface, images);
     result.mesh = std::move(surface.mesh);
     result.report = std::move(surface.report);
     result.traits = traits::MeasureTraits(result.mesh, options.traits);

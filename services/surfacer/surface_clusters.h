@@ -9,6 +9,7 @@
 
 #include "core/geometry/mesh.h"
 #include "core/messages/clusters_message.h"
+#include "core/surface/image_evidence.h"
 #include "core/surface/surface_options.h"
 #include "core/surface/surface_reconstruction.h"
 #include "core/traits/plant_traits.h"
@@ -30,9 +31,11 @@ struct SurfacerResult {
   traits::PlantTraits traits;
 };
 
-// Never throws for bad data: every problem ends up in `problem`.
+// Never throws for bad data: every problem ends up in `problem`. images: the scan's views with
+// plant masks, for Phase 2's image-driven growth (nullptr: the band growth without images).
 SurfacerResult SurfaceClusters(const messages::ClustersContent& clusters,
-                               const SurfacerOptions& options = {});
+                               const SurfacerOptions& options = {},
+                               const surface::SurfaceImages* images = nullptr);
 
 // Writes directory/mesh.ply (binary; per-face `label` = cluster id, per-vertex colours),
 // directory/traits.csv and directory/traits.json. Throws std::runtime_error naming the file when

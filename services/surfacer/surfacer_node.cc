@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/bus/channels.h"
+#include "core/surface/surface_images_io.h"
 #include "core/util/log.h"
 #include "services/surfacer/mesh_message.h"
 
@@ -44,9 +45,17 @@ void SurfacerNode::OnClusters(const products::Product& product) {
     return;
   }
   heartbeat_.Set(bus::ServiceState::kBusy, fmt::format("surfacing '{}'", message.cloud_id));
+  surface::SurfaceImages images;
+  if (!options_.images_dir.empty()) {
+    try {
+      images = surface::ReadSurfaceImages(options_.images_dir);
+    } catch (const std::exception& error) {
+      log::Warn("surfacing '{}' without images: {}", message.cloud_id, error.what());
+    }
+  }
   SurfacerResult result;
   try {
-    result = SurfaceClusters(messages::ClustersFromMessage(message), options_.surfacing);
+    result = SurfaceClusters(messages::ClustersFromMessage(message), options_.surfacing, &images);
   } catch (const std::invalid_argument& error) {  // the message's records are inconsistent
     result.cloud_id = message.cloud_id;
     result.problem = error.what();

@@ -30,6 +30,9 @@ struct SurfacerNodeOptions {
   std::string service = "avc-surfacer";
   SurfacerOptions surfacing;
   std::filesystem::path output_dir;
+  // A reconstruction folder whose masks drive Phase 2 (surface_images_io.h), read for every
+  // clusters product; empty: the band growth. Unreadable masks are logged and not used.
+  std::filesystem::path images_dir;
   products::SenderOptions products;
 
   // Empty when usable, else a sentence naming the bad option.

@@ -10,12 +10,15 @@
 #include <avc/mesh_t.hpp>
 #include <chrono>
 #include <memory>
+#include <numbers>
 #include <vector>
 
 #include "core/bus/channels.h"
 #include "core/messages/clusters_message.h"
+#include "core/surface/surface_images_io.h"
 #include "services/surfacer/mesh_message.h"
 #include "tests/support/test_support.h"
+#include "tests/surface/disc_views.h"
 #include "tests/surfacer/two_leaf_clusters.h"
 
 namespace avc::surfacer {
@@ -78,6 +81,27 @@ TEST(SurfacerNode, AnswersEachClustersProductWithTheOfflineMesh) {
   EXPECT_TRUE(std::filesystem::exists(dir / "plant-mvs-1/traits.csv"));
   EXPECT_TRUE(std::filesystem::exists(dir / "plant-mvs-1/traits.json"));
   EXPECT_EQ(h.node->clusters_answered(), 1);
+}
+
+TEST(SurfacerNode, GrowsOverTheMasksOfItsReconstructionFolder) {
+  ::avc::testing::TempDir dir("avc-surfacer-masks");
+  // The upper leaf (3 cm of points at z = 0.09) is 4 cm wide in the masks.
+  surface::WriteSurfaceImages(dir.path(), surface::ViewsOfDisc(0.04, 0.09));
+  SurfacerNodeOptions options;
+  options.images_dir = dir.path();
+  Harness h(options);
+  const messages::ClustersContent clusters = testing::TwoLeafClusters("masks-1");
+  h.Send(messages::ClustersToMessage(clusters));
+  ASSERT_TRUE(h.WaitForAnswers(1));
+  const surface::SurfaceImages images = surface::ReadSurfaceImages(dir.path());
+  ASSERT_EQ(images.views.size(), 16u);
+  const SurfacerResult offline = SurfaceClusters(clusters, {}, &images);
+  ASSERT_EQ(offline.problem, "");
+  EXPECT_EQ(h.answers[0].data, MeshToMessage(offline.mesh, "masks-1").data);
+  // The upper leaf gained the 7 pi cm^2 ring between 3 and 4 cm.
+  const double ring = std::numbers::pi * (0.04 * 0.04 - 0.03 * 0.03);
+  const double without = geometry::SurfaceArea(SurfaceClusters(clusters).mesh);
+  EXPECT_NEAR(geometry::SurfaceArea(offline.mesh) - without, ring, 0.15 * ring);
 }
 
 TEST(SurfacerNode, RefusedAndBrokenClustersGetAnEmptyMeshAndTheNodeGoesOn) {

@@ -87,7 +87,12 @@ int RunReconstruct(const ReconstructArgs& args) {
       clusterer::WriteClustersPly(output / "clusters.ply", clusters);
       ++written;
       // Surfacing (paper §4) of the clusters and the plant's traits, as the surfacer would.
-      const surfacer::SurfacerResult surface = surfacer::SurfaceClusters(clusters);
+      // Phase 2 grows the cells where the views' plant masks see leaf.
+      surface::SurfaceImages images;
+      for (const dataset::View& view : set.views) {
+        if (!view.mask.empty()) images.views.push_back({view.name, view.camera, view.mask});
+      }
+      const surfacer::SurfacerResult surface = surfacer::SurfaceClusters(clusters, {}, &images);
       if (surface.problem.empty()) {
         surfacer::WriteSurfacerFiles(surface, output);  // mesh.ply, traits.csv, traits.json
         written += 3;

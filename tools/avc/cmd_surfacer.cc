@@ -41,7 +41,8 @@ void RegisterSurfacer(CLI::App& root, int* exit_code) {
       "surfacer",
       "Run the avc-surfacer service. Triangulates every clusters product (PRODUCT/CLUSTERS)\n"
       "into one connected mesh (the paper's Algorithm 3: cells on each cluster's regression\n"
-      "plane, boundary growth, mesh repairs and smoothing, refinement onto the surface fitted to\n"
+      "plane, boundary growth (level sets on the plant masks with --masks-from), mesh repairs\n"
+      "and smoothing, refinement onto the surface fitted to\n"
       "each cluster's points, cell merging) and publishes it on\n"
       "PRODUCT/MESH as a binary PLY (per-face label = cluster id, per-vertex colours), one\n"
       "answer per clusters product (an empty mesh when nothing could be surfaced; the reason\n"
@@ -66,6 +67,16 @@ void RegisterSurfacer(CLI::App& root, int* exit_code) {
       "--no-refine", [args](int64_t) { args->node.surfacing.surface.refine = false; },
       "keep the piecewise-flat mesh through the points (no fitted-surface "
       "refinement)");
+  command
+      ->add_option("--masks-from", args->node.images_dir,
+                   "a reconstruction folder (cameras.json and masks/, as the builder writes "
+                   "them) whose plant masks drive Phase 2's level sets, read again for every "
+                   "clusters product (default: none, the band growth)")
+      ->check(CLI::ExistingDirectory);
+  command
+      ->add_option("--max-growth-factor", surface.image_growth.max_growth_factor,
+                   "with --masks-from: how far a cell may grow, in spacings")
+      ->capture_default_str();
   command->add_option("--ground-z", args->node.surfacing.traits.ground_z,
                       "height of the ground in m that plant height is measured from (default: "
                       "the mesh's lowest point)");

@@ -1,0 +1,118 @@
+#include "bench/surface/scan_surface_case.h"
+
+#include <chrono>
+#include <nlohmann/json.hpp>
+
+#include "bench/mvs/isolated_run.h"
+#include "bench/mvs/plant_organs.h"
+#include "core/dataset/dataset_reader.h"
+#include "core/eval/metrics.h"
+#include "core/geometry/mesh_io.h"
+#include "services/builder/reconstruction.h"
+#include "services/clusterer/merge_and_cluster.h"
+#include "services/surfacer/surface_clusters.h"
+
+namespace avc::bench {
+namespace {
+
+constexpr double kThreshold = 0.002;  // m: precision and recall at 2 mm, as `avc bench e2e`
+
+double ScoreAt(const std::vector<eval::ThresholdScore>& scores, bool recall) {
+  for (const eval::ThresholdScore& s : scores) {
+    if (std::abs(s.threshold - kThreshold) < 1e-12) return recall ? s.recall : s.precision;
+  }
+  return 0.0;
+}
+
+// The leaves' figures from the per-organ evaluation: areas summed, accuracy and precision
+// weighted by the mesh's samples, recall by the truth's (as `avc bench e2e` does).
+nlohmann::json LeafFigures(const eval::EvalResult& result) {
+  double truth_area = 0, area = 0, accuracy = 0, precision = 0, recall = 0;
+  double samples = 0, truth_samples = 0;
+  for (const eval::OrganEval& organ : result.organs) {
+    if (!geometry::labels::IsLeaf(organ.label)) continue;
+    const double n = static_cast<double>(organ.accuracy.count);
+    const double m = static_cast<double>(organ.completeness.count);
+    truth_area += organ.gt_area;
+    area += organ.reconstructed_area.value_or(0.0);
+    accuracy += n * organ.accuracy.mean;
+    precision += n * ScoreAt(organ.scores, false);
+    recall += m * ScoreAt(organ.scores, true);
+    samples += n;
+    truth_samples += m;
+  }
+  return {{"leaf_area_ratio", truth_area > 0 ? area / truth_area : 0.0},
+          {"accuracy_mean", samples > 0 ? accuracy / samples : 0.0},
+          {"precision_2mm", samples > 0 ? precision / samples : 0.0},
+          {"recall_2mm", truth_samples > 0 ? recall / truth_samples : 0.0}};
+}
+
+nlohmann::json SurfaceAndScore(const messages::ClustersContent& clusters,
+                               const surface::SurfaceImages* images, const geometry::Mesh& truth) {
+  const auto start = std::chrono::steady_clock::now();
+  const surfacer::SurfacerResult surface = surfacer::SurfaceClusters(clusters, {}, images);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!surface.problem.empty()) throw std::runtime_error(surface.problem);
+  eval::EvalOptions options;
+  options.thresholds = {kThreshold};
+  nlohmann::json figures = LeafFigures(eval::EvaluateMesh(truth, surface.mesh, options));
+  // The traits as a scan reports them, against the same measures of the truth.
+  const TruthTraits expected = MeasureTruthTraits(truth);
+  figures["total_area_ratio"] = surface.traits.total_area / expected.leaf_area;
+  figures["height_ratio"] = surface.traits.height / expected.height;
+  figures["faces"] = surface.mesh.faces.size();
+  figures["seconds"] = seconds;
+  return figures;
+}
+
+nlohmann::json RunInChild(const std::filesystem::path& scan) {
+  dataset::ViewSet set = dataset::ReadDataset(scan);
+  const builder::Reconstruction reconstruction = builder::Reconstruct(set, {});
+  const messages::ClustersContent clusters = clusterer::ClusterMerged(
+      reconstruction.merged, static_cast<int64_t>(reconstruction.points.size()), {}, "points",
+      "ppr");
+  if (!clusters.problem.empty()) throw std::runtime_error(clusters.problem);
+  const geometry::Mesh truth = PlantOrgans(geometry::ReadMesh(set.ground_truth_mesh));
+  surface::SurfaceImages images;
+  for (const dataset::View& view : set.views) {
+    if (!view.mask.empty()) images.views.push_back({view.name, view.camera, view.mask});
+  }
+  return {{"images", set.views.size()},
+          {"merged_points", clusters.merged.cloud.size()},
+          {"band", SurfaceAndScore(clusters, nullptr, truth)},
+          {"images_growth", SurfaceAndScore(clusters, &images, truth)}};
+}
+
+}  // namespace
+
+std::vector<ScanSurfaceRow> RunScanSurfaceCase(const std::string& preset,
+                                               const std::filesystem::path& scan) {
+  const IsolatedResult run = RunIsolated([&] { return RunInChild(scan); });
+  std::vector<ScanSurfaceRow> rows;
+  for (const auto& [key, method] : {std::pair{"band", "band growth (no images)"},
+                                    std::pair{"images_growth", "image level sets"}}) {
+    ScanSurfaceRow row;
+    row.preset = preset;
+    row.method = method;
+    row.ok = run.ok;
+    row.error = run.error;
+    if (run.ok) {
+      const nlohmann::json& figures = run.result[key];
+      row.images = run.result["images"].get<size_t>();
+      row.merged_points = run.result["merged_points"].get<size_t>();
+      row.leaf_area_ratio = figures["leaf_area_ratio"].get<double>();
+      row.accuracy_mean = figures["accuracy_mean"].get<double>();
+      row.precision_2mm = figures["precision_2mm"].get<double>();
+      row.recall_2mm = figures["recall_2mm"].get<double>();
+      row.total_area_ratio = figures["total_area_ratio"].get<double>();
+      row.height_ratio = figures["height_ratio"].get<double>();
+      row.faces = figures["faces"].get<size_t>();
+      row.seconds = figures["seconds"].get<double>();
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+}  // namespace avc::bench

@@ -1,0 +1,39 @@
+#pragma once
+
+// `avc bench surface --scans`: Phase 2 with and without the images on real reconstructions.
+// A preset's simulated 3 x 10 scan (bench/simulated_scan.h: 1280x960, noise) goes through the
+// builder (undistortion, automatic masks, proxy, patch MVS, merging) and Algorithm 2, as a scan
+// does; the same clusters are then surfaced with the band growth (no images) and with the
+// image-driven level sets (the builder's masks), and both meshes are scored against the plant's
+// leaves: where multi-view stereo left parts of a leaf without points, only the images can say
+// how far the leaf goes.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace avc::bench {
+
+struct ScanSurfaceRow {
+  std::string preset;
+  std::string method;  // "band growth (no images)" or "image level sets"
+  bool ok = false;
+  std::string error;
+  size_t images = 0;
+  size_t merged_points = 0;
+  double leaf_area_ratio = 0;   // leaf area of the mesh nearest each leaf / the leaves' area
+  double accuracy_mean = 0;     // m, mesh area samples on the leaves to the truth
+  double precision_2mm = 0;     // of the mesh's leaf samples
+  double recall_2mm = 0;        // of the leaves' samples
+  double total_area_ratio = 0;  // the total area trait / the leaves' area
+  double height_ratio = 0;      // the mesh's top / the organs' top, above the organs' base
+  size_t faces = 0;
+  double seconds = 0;  // surfacing only
+};
+
+// Both rows for one preset; scan: the rendered scan folder (EnsureSimulatedScan). Runs in a
+// child process (the builder's threads stay out of the benchmark's process).
+std::vector<ScanSurfaceRow> RunScanSurfaceCase(const std::string& preset,
+                                               const std::filesystem::path& scan);
+
+}  // namespace avc::bench

@@ -1,0 +1,38 @@
+#include "core/surface/surface_images_io.h"
+
+#include <fmt/format.h>
+
+#include <opencv2/imgcodecs.hpp>
+#include <stdexcept>
+
+#include "core/camera/camera_io.h"
+
+namespace avc::surface {
+
+SurfaceImages ReadSurfaceImages(const std::filesystem::path& folder) {
+  SurfaceImages images;
+  const std::filesystem::path cameras_file = folder / "cameras.json";
+  const std::filesystem::path masks = folder / "masks";
+  if (!std::filesystem::is_regular_file(cameras_file) || !std::filesystem::is_directory(masks)) {
+    return images;
+  }
+  for (const camera::NamedCamera& named : camera::ReadCamerasJson(cameras_file)) {
+    std::filesystem::path mask_file = masks / std::filesystem::path(named.name).filename();
+    mask_file.replace_extension(".png");
+    if (!std::filesystem::is_regular_file(mask_file)) continue;
+    cv::Mat mask = cv::imread(mask_file.string(), cv::IMREAD_GRAYSCALE);
+    if (mask.empty()) {
+      throw std::runtime_error(fmt::format("{}: not a readable image", mask_file.string()));
+    }
+    const camera::Intrinsics& k = named.camera.intrinsics;
+    if (mask.cols != k.width || mask.rows != k.height) {
+      throw std::runtime_error(fmt::format("{}: {}x{} pixels, but its camera in {} is {}x{}",
+                                           mask_file.string(), mask.cols, mask.rows,
+                                           cameras_file.string(), k.width, k.height));
+    }
+    images.views.push_back({named.name, named.camera, std::move(mask)});
+  }
+  return images;
+}
+
+}  // namespace avc::surface

@@ -1,0 +1,19 @@
+#pragma once
+
+// The images Phase 2 grows with, read from a reconstruction folder as the builder writes it
+// (services/builder/reconstruction_output.h): cameras.json (the undistorted cameras) and
+// masks/<image stem>.png for each.
+
+#include <filesystem>
+
+#include "core/surface/image_evidence.h"
+
+namespace avc::surface {
+
+// The views of folder/cameras.json that have a mask in folder/masks, in cameras.json order;
+// views without a mask are left out. No cameras.json or no masks folder: no views. Throws
+// std::runtime_error naming the file when cameras.json or a mask cannot be read, or a mask's
+// size is not its camera's.
+SurfaceImages ReadSurfaceImages(const std::filesystem::path& folder);
+
+}  // namespace avc::surface

@@ -1,0 +1,140 @@
+// Phase 2 with images: a leaf whose points cover only its middle grows to the outline its
+// plant masks show, stops where they show background, and is left alone by views that do not
+// see it; the masks are read back from a reconstruction folder as the builder writes them.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+#include <opencv2/imgcodecs.hpp>
+#include <stdexcept>
+#include <string>
+
+#include "core/surface/surface_images_io.h"
+#include "core/surface/surface_reconstruction.h"
+#include "tests/surface/disc_views.h"
+#include "tests/surface/surface_test_points.h"
+
+namespace avc::surface {
+namespace {
+
+constexpr double kLeafRadius = 0.03;      // m: the leaf the masks show
+constexpr double kSampledRadius = 0.018;  // m: the part of it multi-view stereo found
+constexpr int kPoints = 250;              // about 2 mm apart
+
+double DiscArea(double radius) { return std::numbers::pi * radius * radius; }
+
+TEST(ImageGrowth, APartlySampledLeafGrowsToTheOutlineItsMasksShow) {
+  const ClusteredPoints points = test::SpiralDisc(kSampledRadius, kPoints);
+  const SurfaceImages images = ViewsOfDisc(kLeafRadius);
+  const SurfaceResult without = ReconstructSurface(points);
+  const SurfaceResult with = ReconstructSurface(points, {}, &images);
+  EXPECT_EQ(without.report.image_views, 0u);
+  EXPECT_EQ(with.report.image_views, 16u);
+  EXPECT_NEAR(geometry::SurfaceArea(without.mesh) / DiscArea(kSampledRadius), 1.0, 0.06);
+  EXPECT_NEAR(geometry::SurfaceArea(with.mesh) / DiscArea(kLeafRadius), 1.0, 0.05);
+  EXPECT_GT(with.report.image_growth.nodes_background, 0u);  // the front met the outline
+  EXPECT_EQ(with.report.components, 1);
+  double farthest = 0.0;
+  for (const Eigen::Vector3f& v : with.mesh.vertices) {
+    EXPECT_NEAR(v.z(), 0.0f, 1e-4f);  // grown on the leaf's surface
+    farthest = std::max(farthest, static_cast<double>(v.head<2>().norm()));
+  }
+  EXPECT_LT(farthest, kLeafRadius + 0.0015);  // and not past its edge
+  EXPECT_GT(farthest, kLeafRadius - 0.0015);
+}
+
+TEST(ImageGrowth, TheFrontStopsWhereTheMasksSeeBackground) {
+  const ClusteredPoints points = test::SpiralDisc(kSampledRadius, kPoints);
+  const double leaf = 0.022;
+  const SurfaceImages images = ViewsOfDisc(leaf);
+  const SurfaceResult result = ReconstructSurface(points, {}, &images);
+  EXPECT_NEAR(geometry::SurfaceArea(result.mesh) / DiscArea(leaf), 1.0, 0.06);
+}
+
+TEST(ImageGrowth, GrowthIsLimitedToMaxGrowthSpacings) {
+  const ClusteredPoints points = test::SpiralDisc(kSampledRadius, kPoints);
+  const SurfaceImages images = ViewsOfDisc(kLeafRadius);
+  SurfaceOptions options;
+  options.image_growth.max_growth_factor = 2.0;
+  const SurfaceResult result = ReconstructSurface(points, options, &images);
+  const double spacing = result.report.thresholds.spacing;
+  const double area = geometry::SurfaceArea(result.mesh);
+  EXPECT_GT(area, DiscArea(kSampledRadius + 0.5 * spacing));
+  EXPECT_LT(area, DiscArea(kSampledRadius + 2.5 * spacing));
+}
+
+TEST(ImageGrowth, ViewsThatDoNotSeeTheLeafGrowNothing) {
+  const ClusteredPoints points = test::SpiralDisc(kSampledRadius, kPoints);
+  SurfaceImages images = ViewsOfDisc(kLeafRadius);
+  for (EvidenceView& view : images.views) {
+    view.camera = LookingAt(Eigen::Vector3d(0.3, 0.0, 0.1), Eigen::Vector3d(0.6, 0.0, 0.1));
+  }
+  const SurfaceResult result = ReconstructSurface(points, {}, &images);
+  EXPECT_EQ(result.report.image_growth.nodes_grown, 0u);
+  EXPECT_GT(result.report.image_growth.nodes_unknown, 0u);
+  // Neither grown by the masks nor by the band: the mesh made without any growth.
+  SurfaceOptions no_growth;
+  no_growth.grow_boundary = false;
+  const SurfaceResult ungrown = ReconstructSurface(points, no_growth);
+  EXPECT_EQ(result.mesh.vertices, ungrown.mesh.vertices);
+  EXPECT_EQ(result.mesh.faces, ungrown.mesh.faces);
+}
+
+TEST(ImageGrowth, SameInputSameMesh) {
+  const ClusteredPoints points = test::SpiralDisc(kSampledRadius, kPoints);
+  const SurfaceImages images = ViewsOfDisc(kLeafRadius);
+  const geometry::Mesh a = ReconstructSurface(points, {}, &images).mesh;
+  const geometry::Mesh b = ReconstructSurface(points, {}, &images).mesh;
+  ASSERT_EQ(a.vertices.size(), b.vertices.size());
+  ASSERT_EQ(a.faces.size(), b.faces.size());
+  for (size_t i = 0; i < a.vertices.size(); ++i) EXPECT_EQ(a.vertices[i], b.vertices[i]);
+  for (size_t i = 0; i < a.faces.size(); ++i) EXPECT_EQ(a.faces[i], b.faces[i]);
+}
+
+TEST(ImageGrowth, AMaskOfTheWrongSizeIsRefusedByName) {
+  const ClusteredPoints points = test::SpiralDisc(kSampledRadius, kPoints);
+  SurfaceImages images = ViewsOfDisc(kLeafRadius);
+  images.views[3].mask = cv::Mat(10, 10, CV_8UC1, cv::Scalar(0));
+  try {
+    ReconstructSurface(points, {}, &images);
+    FAIL() << "a 10x10 mask for a 640x480 camera was accepted";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_NE(std::string(error.what()).find("view_3"), std::string::npos) << error.what();
+  }
+}
+
+TEST(SurfaceImagesIo, MasksAreReadBackWithTheirCameras) {
+  const std::filesystem::path folder =
+      std::filesystem::temp_directory_path() / ("avc_surface_images_" + std::to_string(getpid()));
+  std::filesystem::remove_all(folder);
+  EXPECT_TRUE(ReadSurfaceImages(folder).views.empty());  // no folder: no images
+  std::filesystem::create_directories(folder / "masks");
+  const SurfaceImages images = ViewsOfDisc(kLeafRadius);
+  std::vector<camera::NamedCamera> cameras;
+  for (size_t k = 0; k < 3; ++k) {
+    cameras.push_back({"view_000" + std::to_string(k) + ".jpg", images.views[k].camera});
+    if (k != 1) {  // view 1 has no mask: left out
+      cv::imwrite((folder / "masks" / ("view_000" + std::to_string(k) + ".png")).string(),
+                  images.views[k].mask);
+    }
+  }
+  camera::WriteCamerasJson(folder / "cameras.json", cameras);
+  const SurfaceImages read = ReadSurfaceImages(folder);
+  ASSERT_EQ(read.views.size(), 2u);
+  EXPECT_EQ(read.views[1].name, "view_0002.jpg");
+  EXPECT_EQ(cv::countNonZero(read.views[1].mask != images.views[2].mask), 0);
+
+  cv::imwrite((folder / "masks" / "view_0002.png").string(), cv::Mat(5, 5, CV_8UC1));
+  try {
+    ReadSurfaceImages(folder);
+    FAIL() << "a 5x5 mask for a 640x480 camera was accepted";
+  } catch (const std::runtime_error& error) {
+    EXPECT_NE(std::string(error.what()).find("view_0002.png"), std::string::npos) << error.what();
+  }
+  std::filesystem::remove_all(folder);
+}
+
+}  // namespace
+}  // namespace avc::surface
