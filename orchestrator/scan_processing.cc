@@ -4,11 +4,14 @@
 
 #include "core/dataset/dataset_reader.h"
 #include "core/geometry/mesh_io.h"
+#include "core/ppr/octree_voxels.h"
 #include "core/surface/surface_images_io.h"
+#include "core/util/file_io.h"
 #include "services/builder/build_report.h"
 #include "services/builder/reconstruction_output.h"
 #include "services/clusterer/cluster_folder.h"
 #include "services/clusterer/clusters_ply.h"
+#include "services/surfacer/plant_base.h"
 
 namespace avc::orchestrator {
 
@@ -41,7 +44,12 @@ surfacer::SurfacerResult SurfaceModel(const messages::ClustersContent& clusters,
                                       const std::filesystem::path& model_dir) {
   // The masks BuildModel wrote drive Phase 2's growth (a model without them: the band growth).
   const surface::SurfaceImages images = surface::ReadSurfaceImages(model_dir);
-  surfacer::SurfacerResult surface = surfacer::SurfaceClusters(clusters, {}, &images);
+  // Plant height from the proxy's base, where the stem leaves the soil.
+  surfacer::SurfacerOptions options;
+  const std::filesystem::path proxy_file = model_dir / "ppr.bt";
+  options.traits.ground_z = surfacer::PlantBaseZ(
+      ppr::OccupiedVoxelsFromBinary(ReadFile(proxy_file), 0.0, proxy_file.string()));
+  surfacer::SurfacerResult surface = surfacer::SurfaceClusters(clusters, options, &images);
   if (!surface.problem.empty()) {
     throw std::runtime_error("no surface could be made: " + surface.problem);
   }

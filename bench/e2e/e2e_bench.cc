@@ -112,8 +112,7 @@ Json RunDemo(const RunSpec& spec, const fs::path& work_dir, double time_scale) {
   result["mesh_accuracy_mean_mm"] = 1e3 * evaluation["accuracy"]["mean"].get<double>();
   // The scan's traits against the same measures of the simulated plant (issue 9's targets).
   const Json traits = ReadJson(dir / "model/traits.json");
-  const TruthTraits truth =
-      MeasureTruthTraits(PlantOrgans(geometry::ReadMesh(dir / "gt_mesh.ply")));
+  const TruthTraits truth = MeasureTruthTraits(geometry::ReadMesh(dir / "gt_mesh.ply"));
   result["traits"] = {{"total_area_ratio", traits["total_area_m2"].get<double>() / truth.leaf_area},
                       {"height_ratio", traits["height_m"].get<double>() / truth.height}};
   return result;

@@ -21,8 +21,9 @@ geometry::Mesh PlantOrgans(const geometry::Mesh& mesh) {
   return plant;
 }
 
-TruthTraits MeasureTruthTraits(const geometry::Mesh& organs) {
+TruthTraits MeasureTruthTraits(const geometry::Mesh& mesh) {
   TruthTraits truth;
+  const geometry::Mesh organs = PlantOrgans(mesh);
   double low = std::numeric_limits<double>::infinity();
   double high = -low;
   for (size_t f = 0; f < organs.faces.size(); ++f) {
@@ -37,7 +38,15 @@ TruthTraits MeasureTruthTraits(const geometry::Mesh& organs) {
                                  .cross(organs.vertices[t[2]].cast<double>() - a)
                                  .norm();
   }
-  truth.height = high > low ? high - low : 0.0;
+  double soil = 0.0;
+  size_t soil_corners = 0;
+  for (size_t f = 0; f < mesh.faces.size() && f < mesh.face_labels.size(); ++f) {
+    if (mesh.face_labels[f] != geometry::labels::kSoil) continue;
+    for (int k = 0; k < 3; ++k) soil += mesh.vertices[mesh.faces[f][k]].z();
+    soil_corners += 3;
+  }
+  const double ground = soil_corners > 0 ? soil / static_cast<double>(soil_corners) : low;
+  truth.height = high > ground ? high - ground : 0.0;
   return truth;
 }
 

@@ -11,12 +11,14 @@ namespace avc::bench {
 geometry::Mesh PlantOrgans(const geometry::Mesh& mesh);
 
 // What the traits of a reconstruction of the plant should measure: the leaves' one-sided area
-// (m^2, faces with a leaf label) and the height of the organs (m, their highest vertex above
-// their lowest, as the traits measure a mesh without a ground height). organs: PlantOrgans.
+// (m^2, faces with a leaf label) and the plant's height (m): its organs' highest vertex above
+// the soil's surface (the mean height of the soil's vertices; the simulated stems start 1 cm
+// under it), or above the organs' lowest vertex when there is no soil. mesh: a simulated
+// scan's whole ground truth, with face labels.
 struct TruthTraits {
   double leaf_area = 0;
   double height = 0;
 };
-TruthTraits MeasureTruthTraits(const geometry::Mesh& organs);
+TruthTraits MeasureTruthTraits(const geometry::Mesh& mesh);
 
 }  // namespace avc::bench

@@ -10,6 +10,7 @@
 #include "core/geometry/mesh_io.h"
 #include "services/builder/reconstruction.h"
 #include "services/clusterer/merge_and_cluster.h"
+#include "services/surfacer/plant_base.h"
 #include "services/surfacer/surface_clusters.h"
 
 namespace avc::bench {
@@ -48,17 +49,18 @@ nlohmann::json LeafFigures(const eval::EvalResult& result) {
 }
 
 nlohmann::json SurfaceAndScore(const messages::ClustersContent& clusters,
-                               const surface::SurfaceImages* images, const geometry::Mesh& truth) {
+                               const surface::SurfaceImages* images,
+                               const surfacer::SurfacerOptions& options,
+                               const geometry::Mesh& truth, const TruthTraits& expected) {
   const auto start = std::chrono::steady_clock::now();
-  const surfacer::SurfacerResult surface = surfacer::SurfaceClusters(clusters, {}, images);
+  const surfacer::SurfacerResult surface = surfacer::SurfaceClusters(clusters, options, images);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!surface.problem.empty()) throw std::runtime_error(surface.problem);
-  eval::EvalOptions options;
-  options.thresholds = {kThreshold};
-  nlohmann::json figures = LeafFigures(eval::EvaluateMesh(truth, surface.mesh, options));
+  eval::EvalOptions evaluation;
+  evaluation.thresholds = {kThreshold};
+  nlohmann::json figures = LeafFigures(eval::EvaluateMesh(truth, surface.mesh, evaluation));
   // The traits as a scan reports them, against the same measures of the truth.
-  const TruthTraits expected = MeasureTruthTraits(truth);
   figures["total_area_ratio"] = surface.traits.total_area / expected.leaf_area;
   figures["height_ratio"] = surface.traits.height / expected.height;
   figures["faces"] = surface.mesh.faces.size();
@@ -66,29 +68,36 @@ nlohmann::json SurfaceAndScore(const messages::ClustersContent& clusters,
   return figures;
 }
 
-nlohmann::json RunInChild(const std::filesystem::path& scan) {
+nlohmann::json RunInChild(const std::filesystem::path& scan,
+                          const surface::ImageGrowthOptions& growth) {
   dataset::ViewSet set = dataset::ReadDataset(scan);
   const builder::Reconstruction reconstruction = builder::Reconstruct(set, {});
   const messages::ClustersContent clusters = clusterer::ClusterMerged(
       reconstruction.merged, static_cast<int64_t>(reconstruction.points.size()), {}, "points",
       "ppr");
   if (!clusters.problem.empty()) throw std::runtime_error(clusters.problem);
-  const geometry::Mesh truth = PlantOrgans(geometry::ReadMesh(set.ground_truth_mesh));
+  const geometry::Mesh ground_truth = geometry::ReadMesh(set.ground_truth_mesh);
+  const geometry::Mesh truth = PlantOrgans(ground_truth);
+  const TruthTraits expected = MeasureTruthTraits(ground_truth);
   surface::SurfaceImages images;
   for (const dataset::View& view : set.views) {
     if (!view.mask.empty()) images.views.push_back({view.name, view.camera, view.mask});
   }
+  surfacer::SurfacerOptions options;  // height from the proxy's base, as a scan measures it
+  options.traits.ground_z = surfacer::PlantBaseZ(reconstruction.proxy.ToMvsBounds());
+  options.surface.image_growth = growth;
   return {{"images", set.views.size()},
           {"merged_points", clusters.merged.cloud.size()},
-          {"band", SurfaceAndScore(clusters, nullptr, truth)},
-          {"images_growth", SurfaceAndScore(clusters, &images, truth)}};
+          {"band", SurfaceAndScore(clusters, nullptr, options, truth, expected)},
+          {"images_growth", SurfaceAndScore(clusters, &images, options, truth, expected)}};
 }
 
 }  // namespace
 
 std::vector<ScanSurfaceRow> RunScanSurfaceCase(const std::string& preset,
-                                               const std::filesystem::path& scan) {
-  const IsolatedResult run = RunIsolated([&] { return RunInChild(scan); });
+                                               const std::filesystem::path& scan,
+                                               const surface::ImageGrowthOptions& growth) {
+  const IsolatedResult run = RunIsolated([&] { return RunInChild(scan, growth); });
   std::vector<ScanSurfaceRow> rows;
   for (const auto& [key, method] : {std::pair{"band", "band growth (no images)"},
                                     std::pair{"images_growth", "image level sets"}}) {

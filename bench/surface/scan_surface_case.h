@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "core/surface/image_growth_options.h"
+
 namespace avc::bench {
 
 struct ScanSurfaceRow {
@@ -31,9 +33,11 @@ struct ScanSurfaceRow {
   double seconds = 0;  // surfacing only
 };
 
-// Both rows for one preset; scan: the rendered scan folder (EnsureSimulatedScan). Runs in a
-// child process (the builder's threads stay out of the benchmark's process).
+// Both rows for one preset; scan: the rendered scan folder (EnsureSimulatedScan); growth: the
+// image level sets' options. Runs in a child process (the builder's threads stay out of the
+// benchmark's process).
 std::vector<ScanSurfaceRow> RunScanSurfaceCase(const std::string& preset,
-                                               const std::filesystem::path& scan);
+                                               const std::filesystem::path& scan,
+                                               const surface::ImageGrowthOptions& growth);
 
 }  // namespace avc::bench

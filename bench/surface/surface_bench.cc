@@ -106,7 +106,8 @@ void PrintScanTable(const std::vector<ScanSurfaceRow>& rows) {
   }
 }
 
-int RunScanRows(const std::vector<std::string>& presets, const std::string& work_dir) {
+int RunScanRows(const std::vector<std::string>& presets, const std::string& work_dir,
+                const surface::ImageGrowthOptions& growth) {
   const std::filesystem::path work =
       work_dir.empty()
           ? std::filesystem::temp_directory_path() / fmt::format("avc-bench-surface-{}", getpid())
@@ -120,7 +121,7 @@ int RunScanRows(const std::vector<std::string>& presets, const std::string& work
       continue;
     }
     std::cerr << fmt::format("  {}: builder, Algorithm 2, surfacer twice\n", preset);
-    for (ScanSurfaceRow& row : RunScanSurfaceCase(preset, *scan)) {
+    for (ScanSurfaceRow& row : RunScanSurfaceCase(preset, *scan, growth)) {
       failed = failed || !row.ok;
       rows.push_back(std::move(row));
     }
@@ -159,8 +160,13 @@ int RunSurfaceBenchmark(const std::vector<std::string>& arguments) {
   app.add_option("--work-dir", work_dir,
                  "with --scans: keep the rendered scans here and reuse them (default: a "
                  "temporary folder, removed at the end)");
+  surface::ImageGrowthOptions growth;
+  app.add_option("--max-growth-factor", growth.max_growth_factor,
+                 "with --scans: how far the image level sets may grow a cell, in spacings")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   if (const auto exit_code = ParseBenchmarkArguments(app, arguments)) return *exit_code;
-  if (scans) return RunScanRows(presets, work_dir);
+  if (scans) return RunScanRows(presets, work_dir, growth);
 
   std::vector<SurfaceCaseResult> cases;
   for (const std::string& name : presets) {

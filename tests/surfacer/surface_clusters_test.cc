@@ -12,6 +12,7 @@
 
 #include "core/geometry/mesh_io.h"
 #include "services/surfacer/mesh_message.h"
+#include "services/surfacer/plant_base.h"
 #include "tests/support/test_support.h"
 #include "tests/surfacer/two_leaf_clusters.h"
 
@@ -36,6 +37,15 @@ TEST(SurfaceClusters, TwoLeavesBecomeAMeshWithClusterIdsColoursAndTraits) {
   EXPECT_NEAR(result.traits.total_area, geometry::SurfaceArea(mesh), 1e-9);
   ASSERT_EQ(result.traits.clusters.size(), 2u);
   EXPECT_NEAR(result.traits.clusters[0].inclination, 0.0, 0.05);  // facing up
+}
+
+TEST(PlantBase, IsTheBottomOfTheProxysLowestVoxel) {
+  mvs::MvsBounds proxy;
+  EXPECT_FALSE(PlantBaseZ(proxy).has_value());
+  proxy.voxel_size = 0.002;
+  proxy.occupied_centres = {{0.01f, 0.0f, 0.081f}, {0.0f, 0.02f, 0.051f}, {0.0f, 0.0f, 0.12f}};
+  ASSERT_TRUE(PlantBaseZ(proxy).has_value());
+  EXPECT_NEAR(*PlantBaseZ(proxy), 0.050, 1e-6);
 }
 
 TEST(SurfaceClusters, ProblemsAreReportedByNameNotThrown) {

@@ -16,6 +16,7 @@
 #include "services/builder/reconstruction_output.h"
 #include "services/clusterer/clusters_ply.h"
 #include "services/clusterer/merge_and_cluster.h"
+#include "services/surfacer/plant_base.h"
 #include "services/surfacer/surface_clusters.h"
 #include "tools/avc/cluster_cli.h"
 #include "tools/avc/commands.h"
@@ -92,7 +93,10 @@ int RunReconstruct(const ReconstructArgs& args) {
       for (const dataset::View& view : set.views) {
         if (!view.mask.empty()) images.views.push_back({view.name, view.camera, view.mask});
       }
-      const surfacer::SurfacerResult surface = surfacer::SurfaceClusters(clusters, {}, &images);
+      surfacer::SurfacerOptions surfacing;  // plant height from the proxy's base
+      surfacing.traits.ground_z = surfacer::PlantBaseZ(reconstruction.proxy.ToMvsBounds());
+      const surfacer::SurfacerResult surface =
+          surfacer::SurfaceClusters(clusters, surfacing, &images);
       if (surface.problem.empty()) {
         surfacer::WriteSurfacerFiles(surface, output);  // mesh.ply, traits.csv, traits.json
         written += 3;
