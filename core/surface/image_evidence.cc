@@ -18,13 +18,13 @@ ImageEvidence::ImageEvidence(const SurfaceImages& images, const ImageGrowthOptio
           "image growth: the mask of view '{}' is not an 8-bit single-channel {}x{} image",
           view.name, k.width, k.height));
     }
-    PreparedView prepared{view.camera, view.mask, cv::Mat()};
     // For each background pixel, its distance to the nearest plant pixel.
-    cv::Mat background = view.mask == 0;
     cv::Mat distance;
-    cv::distanceTransform(background, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE);
-    prepared.background = distance > options.edge_tolerance_px;
-    views_.push_back(std::move(prepared));
+    cv::distanceTransform(view.mask == 0, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+    cv::Mat says(view.mask.size(), CV_8UC1, cv::Scalar(kNearEdge));
+    says.setTo(kClearBackground, distance > options.edge_tolerance_px);
+    says.setTo(kPlant, view.mask != 0);
+    views_.push_back({view.camera, std::move(says)});
   }
 }
 
@@ -36,13 +36,12 @@ NodeVerdict ImageEvidence::Judge(const Eigen::Vector3d& point) const {
     if (!pixel) continue;
     const double x = std::round(pixel->x());
     const double y = std::round(pixel->y());
-    if (!(x >= 0.0 && y >= 0.0 && x < view.mask.cols && y < view.mask.rows)) continue;
-    const int column = static_cast<int>(x);
-    const int row = static_cast<int>(y);
-    if (view.mask.at<uint8_t>(row, column) != 0) {
+    if (!(x >= 0.0 && y >= 0.0 && x < view.says.cols && y < view.says.rows)) continue;
+    const uint8_t says = view.says.at<uint8_t>(static_cast<int>(y), static_cast<int>(x));
+    if (says == kPlant) {
       ++plant;
-    } else if (view.background.at<uint8_t>(row, column) != 0) {
-      if (++background >= min_background_views_) return NodeVerdict::kBackground;
+    } else if (says == kClearBackground && ++background >= min_background_views_) {
+      return NodeVerdict::kBackground;
     }
   }
   return plant >= min_plant_views_ ? NodeVerdict::kPlant : NodeVerdict::kUnknown;

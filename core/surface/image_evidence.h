@@ -9,6 +9,7 @@
 // grow there.
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <opencv2/core/mat.hpp>
 #include <string>
 #include <vector>
@@ -44,10 +45,11 @@ class ImageEvidence {
   size_t views() const { return views_.size(); }
 
  private:
+  // What each pixel says, one byte a pixel (a real cell's 18-megapixel masks add up).
+  static constexpr uint8_t kClearBackground = 0, kNearEdge = 128, kPlant = 255;
   struct PreparedView {
     camera::Camera camera;
-    cv::Mat mask;        // shared with the caller's SurfaceImages
-    cv::Mat background;  // CV_8UC1: 1 where background lies beyond the edge tolerance
+    cv::Mat says;  // CV_8UC1 of kClearBackground, kNearEdge or kPlant
   };
   std::vector<PreparedView> views_;
   int min_plant_views_;

@@ -11,8 +11,11 @@ struct ImageGrowthOptions {
   bool enabled = true;
   // Farthest a cell's outline may move, in spacings: enough to close the gaps multi-view
   // stereo leaves on a leaf (a missed strip of a blade, a margin seen edge-on), not so far that
-  // the continuation of the fitted surface is a guess.
-  double max_growth_factor = 8.0;
+  // the continuation of the fitted surface is a guess. On the simulated scans (`avc bench
+  // surface --scans`) 8 / 12 / 16 give F@2mm 0.921 / 0.934 / 0.934 on the broadleaf, 0.711 /
+  // 0.748 / 0.769 on the strap, precision 98.1 / 97.2 / 96.2 % on the broadleaf: 12, where the
+  // broadleaf's gain ends.
+  double max_growth_factor = 12.0;
   // Grid pitch on the cell's plane, in spacings: the grown outline is placed to this.
   double grid_factor = 0.5;
   // A node is leaf when at least this many views see plant at its projection...
