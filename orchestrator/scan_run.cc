@@ -312,6 +312,12 @@ class ScanRun {
     report["planner"] = record_.options;
     report["build"] = nlohmann::json::parse(ReadFile(model_dir_ / "build.json"));
     report["traits"] = nlohmann::json::parse(ReadFile(model_dir_ / "traits.json"));
+    if (surface_) {  // how Phase 2 grew the cells, and what the surfacer warned of
+      const surface::SurfaceReport& made = surface_->report;
+      report["surface"] = {{"image_views", made.image_views},
+                           {"grown_vertices", made.grown_vertices},
+                           {"warnings", made.warnings}};
+    }
     report["files"] = {"images/",          "cameras.json",       "colmap/",
                        kCalibrationName,   "model/ppr.bt",       "model/points.ply",
                        "model/merged.ply", "model/clusters.ply", "model/mesh.ply",

@@ -220,6 +220,11 @@ SurfaceResult ReconstructSurface(const ClusteredPoints& input, const SurfaceOpti
     if (images != nullptr && !images->views.empty() && options.image_growth.enabled) {
       GrowCellsWithImages(cells, input, usable, *images, options, thresholds, &report);
     } else {
+      if (images != nullptr && images->views.empty() && options.image_growth.enabled) {
+        report.warnings.push_back(
+            "surface: no views with plant masks for Phase 2's level sets; the outlines grow by "
+            "the sampling's band instead");
+      }
       GrowCellsByBand(cells, usable, thresholds, options.growth_scale, &report);
     }
   }

@@ -82,6 +82,17 @@ TEST(ImageGrowth, ViewsThatDoNotSeeTheLeafGrowNothing) {
   EXPECT_EQ(result.mesh.faces, ungrown.mesh.faces);
 }
 
+TEST(ImageGrowth, NoMasksFallBackToTheBandGrowthWithAWarning) {
+  const ClusteredPoints points = test::SpiralDisc(kSampledRadius, kPoints);
+  const SurfaceImages none;
+  const SurfaceResult result = ReconstructSurface(points, {}, &none);
+  const SurfaceResult band = ReconstructSurface(points);
+  EXPECT_EQ(result.mesh.faces, band.mesh.faces);
+  EXPECT_TRUE(band.report.warnings.empty());
+  ASSERT_EQ(result.report.warnings.size(), 1u);
+  EXPECT_NE(result.report.warnings[0].find("no views with plant masks"), std::string::npos);
+}
+
 TEST(ImageGrowth, SameInputSameMesh) {
   const ClusteredPoints points = test::SpiralDisc(kSampledRadius, kPoints);
   const SurfaceImages images = ViewsOfDisc(kLeafRadius);
