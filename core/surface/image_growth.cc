@@ -1,8 +1,10 @@
 #include "core/surface/image_growth.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <deque>
+#include <numbers>
 #include <opencv2/imgproc.hpp>
 #include <optional>
 #include <queue>
@@ -110,7 +112,7 @@ std::vector<uint8_t> PropagateFront(const PlaneGrid& grid, double reach, NodeJud
           continue;
         }
         const size_t next = grid.Node(column, row);
-        const double step = grid.pitch() * (dc != 0 && dr != 0 ? M_SQRT2 : 1.0);
+        const double step = grid.pitch() * (dc != 0 && dr != 0 ? std::numbers::sqrt2 : 1.0);
         if (covered[next] || time + step > reach || time + step >= arrival[next]) continue;
         if (!judge.Passable(next)) continue;
         arrival[next] = time + step;
