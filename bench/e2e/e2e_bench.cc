@@ -17,6 +17,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "bench/leaf_figures.h"
 #include "bench/mvs/plant_organs.h"
 #include "bench/registry.h"
 #include "core/geometry/mesh_io.h"
@@ -29,46 +30,10 @@ namespace {
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
-constexpr int kFirstLeafLabel = 100;  // organ labels: 100 + leaf index
-
 Json ReadJson(const fs::path& path) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error("cannot read " + path.string());
   return Json::parse(in);
-}
-
-double ScoreAt(const Json& scores, double threshold, const char* key) {
-  for (const Json& s : scores) {
-    if (std::abs(s["threshold"].get<double>() - threshold) < 1e-9) return s[key].get<double>();
-  }
-  return 0;
-}
-
-// The leaves' figures from `avc eval`'s per-organ ones: areas summed, accuracy weighted by the
-// reconstruction's samples, recall by the truth's.
-Json LeafFigures(const Json& evaluation) {
-  double gt_area = 0, area = 0, accuracy_sum = 0, recall_sum = 0, precision_sum = 0;
-  double points = 0, samples = 0;
-  for (const Json& organ : evaluation["organs"]) {
-    if (organ["label"].get<int>() < kFirstLeafLabel) continue;
-    const double n = organ["reconstruction_points"].get<double>();
-    const double m = organ["gt_samples"].get<double>();
-    gt_area += organ["gt_area_m2"].get<double>();
-    area += organ["reconstructed_area_m2"].get<double>();
-    if (n > 0) accuracy_sum += n * organ["accuracy"]["mean"].get<double>();
-    precision_sum += n * ScoreAt(organ["scores"], 0.002, "precision");
-    recall_sum += m * ScoreAt(organ["scores"], 0.002, "recall");
-    points += n;
-    samples += m;
-  }
-  const double precision = points > 0 ? precision_sum / points : 0;
-  const double recall = samples > 0 ? recall_sum / samples : 0;
-  return {
-      {"area_ratio", gt_area > 0 ? area / gt_area : 0},
-      {"accuracy_mean_mm", points > 0 ? 1e3 * accuracy_sum / points : 0},
-      {"precision_2mm", precision},
-      {"recall_2mm", recall},
-      {"fscore_2mm", precision + recall > 0 ? 2 * precision * recall / (precision + recall) : 0}};
 }
 
 struct RunSpec {

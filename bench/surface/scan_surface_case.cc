@@ -3,11 +3,14 @@
 #include <chrono>
 #include <nlohmann/json.hpp>
 
+#include "bench/leaf_figures.h"
 #include "bench/mvs/isolated_run.h"
 #include "bench/mvs/plant_organs.h"
 #include "core/dataset/dataset_reader.h"
 #include "core/eval/metrics.h"
+#include "core/eval/report_json.h"
 #include "core/geometry/mesh_io.h"
+#include "core/surface/surface_images_io.h"
 #include "services/builder/reconstruction.h"
 #include "services/clusterer/merge_and_cluster.h"
 #include "services/surfacer/plant_base.h"
@@ -15,38 +18,6 @@
 
 namespace avc::bench {
 namespace {
-
-constexpr double kThreshold = 0.002;  // m: precision and recall at 2 mm, as `avc bench e2e`
-
-double ScoreAt(const std::vector<eval::ThresholdScore>& scores, bool recall) {
-  for (const eval::ThresholdScore& s : scores) {
-    if (std::abs(s.threshold - kThreshold) < 1e-12) return recall ? s.recall : s.precision;
-  }
-  return 0.0;
-}
-
-// The leaves' figures from the per-organ evaluation: areas summed, accuracy and precision
-// weighted by the mesh's samples, recall by the truth's (as `avc bench e2e` does).
-nlohmann::json LeafFigures(const eval::EvalResult& result) {
-  double truth_area = 0, area = 0, accuracy = 0, precision = 0, recall = 0;
-  double samples = 0, truth_samples = 0;
-  for (const eval::OrganEval& organ : result.organs) {
-    if (!geometry::labels::IsLeaf(organ.label)) continue;
-    const double n = static_cast<double>(organ.accuracy.count);
-    const double m = static_cast<double>(organ.completeness.count);
-    truth_area += organ.gt_area;
-    area += organ.reconstructed_area.value_or(0.0);
-    accuracy += n * organ.accuracy.mean;
-    precision += n * ScoreAt(organ.scores, false);
-    recall += m * ScoreAt(organ.scores, true);
-    samples += n;
-    truth_samples += m;
-  }
-  return {{"leaf_area_ratio", truth_area > 0 ? area / truth_area : 0.0},
-          {"accuracy_mean", samples > 0 ? accuracy / samples : 0.0},
-          {"precision_2mm", samples > 0 ? precision / samples : 0.0},
-          {"recall_2mm", truth_samples > 0 ? recall / truth_samples : 0.0}};
-}
 
 nlohmann::json SurfaceAndScore(const messages::ClustersContent& clusters,
                                const surface::SurfaceImages* images,
@@ -58,8 +29,9 @@ nlohmann::json SurfaceAndScore(const messages::ClustersContent& clusters,
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!surface.problem.empty()) throw std::runtime_error(surface.problem);
   eval::EvalOptions evaluation;
-  evaluation.thresholds = {kThreshold};
-  nlohmann::json figures = LeafFigures(eval::EvaluateMesh(truth, surface.mesh, evaluation));
+  evaluation.thresholds = {0.002};  // precision and recall at 2 mm, as `avc bench e2e`
+  nlohmann::json figures =
+      LeafFigures(eval::ToJson(eval::EvaluateMesh(truth, surface.mesh, evaluation)));
   // The traits as a scan reports them, against the same measures of the truth.
   figures["total_area_ratio"] = surface.traits.total_area / expected.leaf_area;
   figures["height_ratio"] = surface.traits.height / expected.height;
@@ -79,10 +51,7 @@ nlohmann::json RunInChild(const std::filesystem::path& scan,
   const geometry::Mesh ground_truth = geometry::ReadMesh(set.ground_truth_mesh);
   const geometry::Mesh truth = PlantOrgans(ground_truth);
   const TruthTraits expected = MeasureTruthTraits(ground_truth);
-  surface::SurfaceImages images;
-  for (const dataset::View& view : set.views) {
-    if (!view.mask.empty()) images.views.push_back({view.name, view.camera, view.mask});
-  }
+  const surface::SurfaceImages images = surface::SurfaceImagesOf(set);
   surfacer::SurfacerOptions options;  // height from the proxy's base, as a scan measures it
   options.traits.ground_z = surfacer::PlantBaseZ(reconstruction.proxy.ToMvsBounds());
   options.surface.image_growth = growth;
@@ -110,8 +79,8 @@ std::vector<ScanSurfaceRow> RunScanSurfaceCase(const std::string& preset,
       const nlohmann::json& figures = run.result[key];
       row.images = run.result["images"].get<size_t>();
       row.merged_points = run.result["merged_points"].get<size_t>();
-      row.leaf_area_ratio = figures["leaf_area_ratio"].get<double>();
-      row.accuracy_mean = figures["accuracy_mean"].get<double>();
+      row.leaf_area_ratio = figures["area_ratio"].get<double>();
+      row.accuracy_mean = 1e-3 * figures["accuracy_mean_mm"].get<double>();
       row.precision_2mm = figures["precision_2mm"].get<double>();
       row.recall_2mm = figures["recall_2mm"].get<double>();
       row.total_area_ratio = figures["total_area_ratio"].get<double>();

@@ -35,4 +35,12 @@ SurfaceImages ReadSurfaceImages(const std::filesystem::path& folder) {
   return images;
 }
 
+SurfaceImages SurfaceImagesOf(const dataset::ViewSet& set) {
+  SurfaceImages images;
+  for (const dataset::View& view : set.views) {
+    if (!view.mask.empty()) images.views.push_back({view.name, view.camera, view.mask});
+  }
+  return images;
+}
+
 }  // namespace avc::surface

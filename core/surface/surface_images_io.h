@@ -1,11 +1,12 @@
 #pragma once
 
-// The images Phase 2 grows with, read from a reconstruction folder as the builder writes it
-// (services/builder/reconstruction_output.h): cameras.json (the undistorted cameras) and
-// masks/<image stem>.png for each.
+// The images Phase 2 grows with: read from a reconstruction folder as the builder writes it
+// (services/builder/reconstruction_output.h: cameras.json, the undistorted cameras, and
+// masks/<image stem>.png for each), or taken from a view set the builder has just masked.
 
 #include <filesystem>
 
+#include "core/dataset/view.h"
 #include "core/surface/image_evidence.h"
 
 namespace avc::surface {
@@ -15,5 +16,8 @@ namespace avc::surface {
 // std::runtime_error naming the file when cameras.json or a mask cannot be read, or a mask's
 // size is not its camera's.
 SurfaceImages ReadSurfaceImages(const std::filesystem::path& folder);
+
+// The views of a set that have a mask (the masks are shared, not copied).
+SurfaceImages SurfaceImagesOf(const dataset::ViewSet& set);
 
 }  // namespace avc::surface

@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "core/dataset/dataset_reader.h"
+#include "core/surface/surface_images_io.h"
 #include "services/builder/build_report.h"
 #include "services/builder/option_overrides.h"
 #include "services/builder/reconstruction.h"
@@ -89,10 +90,7 @@ int RunReconstruct(const ReconstructArgs& args) {
       ++written;
       // Surfacing (paper §4) of the clusters and the plant's traits, as the surfacer would.
       // Phase 2 grows the cells where the views' plant masks see leaf.
-      surface::SurfaceImages images;
-      for (const dataset::View& view : set.views) {
-        if (!view.mask.empty()) images.views.push_back({view.name, view.camera, view.mask});
-      }
+      const surface::SurfaceImages images = surface::SurfaceImagesOf(set);
       surfacer::SurfacerOptions surfacing;  // plant height from the proxy's base
       surfacing.traits.ground_z = surfacer::PlantBaseZ(reconstruction.proxy.ToMvsBounds());
       const surfacer::SurfacerResult surface =
