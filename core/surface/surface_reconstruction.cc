@@ -100,8 +100,7 @@ std::vector<Cell> TriangulateClusters(const ClusteredPoints& input, const Cluste
   return cells;
 }
 
-// Phase 2 stand-in without images: outlines away from other cells grow by the sampling's edge
-// band.
+// Phase 2 without images: outlines away from other cells grow by the sampling's edge band.
 void GrowCellsByBand(std::vector<Cell>& cells, const UsablePoints& usable,
                      SurfaceThresholds& thresholds, double growth_scale, SurfaceReport* report) {
   thresholds.growth_band = EstimateBoundaryBand(cells, thresholds.spacing, growth_scale);
@@ -122,8 +121,8 @@ void GrowCellsByBand(std::vector<Cell>& cells, const UsablePoints& usable,
   }
 }
 
-// A point nearer another cell than this many growth clearances' worth of its own samples is
-// that cell's to cover: beyond it, only a point of another cell within the clearance is.
+// A grid node belongs to another cell when one of its samples is within the growth clearance,
+// or when the nearest sample within this many clearances is another cell's.
 constexpr double kClaimRadiusFactor = 2.0;
 
 // Phase 2 with images (image_growth.h): each cell grows as a level set over its plane where
@@ -216,17 +215,16 @@ SurfaceResult ReconstructSurface(const ClusteredPoints& input, const SurfaceOpti
   };
   std::vector<Cell> cells = TriangulateClusters(input, members, thresholds, &usable, &report);
   report.area_triangulated = total_area(cells);
-  if (options.grow_boundary) {
-    if (images != nullptr && !images->views.empty() && options.image_growth.enabled) {
-      GrowCellsWithImages(cells, input, usable, *images, options, thresholds, &report);
-    } else {
-      if (images != nullptr && images->views.empty() && options.image_growth.enabled) {
-        report.warnings.push_back(
-            "surface: no views with plant masks for Phase 2's level sets; the outlines grow by "
-            "the sampling's band instead");
-      }
-      GrowCellsByBand(cells, usable, thresholds, options.growth_scale, &report);
+  const bool images_asked = images != nullptr && options.image_growth.enabled;
+  if (options.grow_boundary && images_asked && !images->views.empty()) {
+    GrowCellsWithImages(cells, input, usable, *images, options, thresholds, &report);
+  } else if (options.grow_boundary) {
+    if (images_asked) {
+      report.warnings.push_back(
+          "surface: no views with plant masks for Phase 2's level sets; the outlines grow by "
+          "the sampling's band instead");
     }
+    GrowCellsByBand(cells, usable, thresholds, options.growth_scale, &report);
   }
   report.area_grown = total_area(cells);
   for (Cell& cell : cells) {
