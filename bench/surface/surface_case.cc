@@ -49,6 +49,7 @@ SurfaceMethodResult Score(const std::string& method, const geometry::Mesh& truth
     const LeafConnectivity leaves = CountConnectedLeaves(truth, mesh);
     result.leaves = leaves.leaves;
     result.connected_leaves = leaves.one_component;
+    result.connected_leaves_strict = leaves.one_component_strict;
     result.connected_fraction = leaves.Fraction();
     result.ok = true;
   } catch (const std::exception& error) {

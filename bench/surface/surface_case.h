@@ -29,7 +29,8 @@ struct SurfaceMethodResult {
   double mean = 0;  // m
   double connected_fraction = 0;
   int leaves = 0;
-  int connected_leaves = 0;
+  int connected_leaves = 0;         // leaf_connectivity.h: attribution settled on the mesh
+  int connected_leaves_strict = 0;  // ... every face given to its nearest leaf
   size_t faces = 0;
   double seconds = 0;          // median over the repeats (meshing only)
   double cluster_seconds = 0;  // Algorithm 2 clustering, when the method uses it
