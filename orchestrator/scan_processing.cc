@@ -9,6 +9,7 @@
 #include "core/util/file_io.h"
 #include "services/builder/build_report.h"
 #include "services/builder/reconstruction_output.h"
+#include "services/builder/soil_level.h"
 #include "services/clusterer/cluster_folder.h"
 #include "services/clusterer/clusters_ply.h"
 #include "services/surfacer/plant_base.h"
@@ -44,10 +45,11 @@ surfacer::SurfacerResult SurfaceModel(const messages::ClustersContent& clusters,
                                       const std::filesystem::path& model_dir) {
   // The masks BuildModel wrote drive Phase 2's growth (a model without them: the band growth).
   const surface::SurfaceImages images = surface::ReadSurfaceImages(model_dir);
-  // Plant height from the proxy's base, where the stem leaves the soil.
+  // Plant height from the soil surface the builder found, else from the proxy's base.
   surfacer::SurfacerOptions options;
   const std::filesystem::path proxy_file = model_dir / "ppr.bt";
-  options.traits.ground_z = surfacer::PlantBaseZ(
+  options.traits.ground_z = surfacer::PlantGroundZ(
+      builder::SoilZ(builder::ReadSoilLevel(model_dir / "soil.json")),
       ppr::OccupiedVoxelsFromBinary(ReadFile(proxy_file), 0.0, proxy_file.string()));
   surfacer::SurfacerResult surface = surfacer::SurfaceClusters(clusters, options, &images);
   if (!surface.problem.empty()) {

@@ -46,6 +46,7 @@ TruthTraits MeasureTruthTraits(const geometry::Mesh& mesh) {
     soil_corners += 3;
   }
   const double ground = soil_corners > 0 ? soil / static_cast<double>(soil_corners) : low;
+  truth.ground_z = ground;
   truth.height = high > ground ? high - ground : 0.0;
   return truth;
 }

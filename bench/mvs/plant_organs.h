@@ -18,6 +18,7 @@ geometry::Mesh PlantOrgans(const geometry::Mesh& mesh);
 struct TruthTraits {
   double leaf_area = 0;
   double height = 0;
+  double ground_z = 0;  // m, world: what the height is measured from
 };
 TruthTraits MeasureTruthTraits(const geometry::Mesh& mesh);
 

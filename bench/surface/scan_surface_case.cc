@@ -52,10 +52,13 @@ nlohmann::json RunInChild(const std::filesystem::path& scan,
   const geometry::Mesh truth = PlantOrgans(ground_truth);
   const TruthTraits expected = MeasureTruthTraits(ground_truth);
   const surface::SurfaceImages images = surface::SurfaceImagesOf(set);
-  surfacer::SurfacerOptions options;  // height from the proxy's base, as a scan measures it
-  options.traits.ground_z = surfacer::PlantBaseZ(reconstruction.proxy.ToMvsBounds());
+  surfacer::SurfacerOptions options;  // height as a scan measures it
+  options.traits.ground_z = surfacer::PlantGroundZ(builder::SoilZ(reconstruction.soil),
+                                                   reconstruction.proxy.ToMvsBounds());
   options.surface.image_growth = growth;
   return {{"images", set.views.size()},
+          {"ground_error_m", *options.traits.ground_z - expected.ground_z},
+          {"soil_found", reconstruction.soil.has_value()},
           {"merged_points", clusters.merged.cloud.size()},
           {"band", SurfaceAndScore(clusters, nullptr, options, truth, expected)},
           {"images_growth", SurfaceAndScore(clusters, &images, options, truth, expected)}};
@@ -79,6 +82,8 @@ std::vector<ScanSurfaceRow> RunScanSurfaceCase(const std::string& preset,
       const nlohmann::json& figures = run.result[key];
       row.images = run.result["images"].get<size_t>();
       row.merged_points = run.result["merged_points"].get<size_t>();
+      row.ground_error = run.result["ground_error_m"].get<double>();
+      row.soil_found = run.result["soil_found"].get<bool>();
       row.leaf_area_ratio = figures["area_ratio"].get<double>();
       row.accuracy_mean = 1e-3 * figures["accuracy_mean_mm"].get<double>();
       row.precision_2mm = figures["precision_2mm"].get<double>();

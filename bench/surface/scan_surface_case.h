@@ -28,7 +28,10 @@ struct ScanSurfaceRow {
   double precision_2mm = 0;     // of the mesh's leaf samples
   double recall_2mm = 0;        // of the leaves' samples
   double total_area_ratio = 0;  // the total area trait / the leaves' area
-  double height_ratio = 0;      // the mesh's top / the organs' top, above the organs' base
+  double height_ratio = 0;      // the height trait / the organs' height above the soil
+  double ground_error = 0;      // m, where the height is measured from (the soil found, else the
+                                // proxy's base) minus the true soil's mean height
+  bool soil_found = false;      // the builder found the soil (else the proxy's base was used)
   size_t faces = 0;
   double seconds = 0;  // surfacing only
 };

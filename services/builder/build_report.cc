@@ -39,6 +39,7 @@ BuildReport MakeBuildReport(const Reconstruction& reconstruction, MvsMethod meth
   report.voxels = reconstruction.proxy.Counts();
   report.timings = reconstruction.timings;
   report.masks = reconstruction.masks;
+  report.soil = reconstruction.soil;
   if (!ground_truth_mesh.empty() && report.points > 0) {
     const geometry::Mesh truth = geometry::ReadMesh(ground_truth_mesh);
     eval::EvalOptions options;
@@ -91,6 +92,7 @@ nlohmann::ordered_json BuildReportToJson(const BuildReport& report) {
                      {"plant_fraction", m.plant_fraction}});
   }
   json["masks"] = masks;
+  json["soil"] = report.soil ? nlohmann::ordered_json(SoilLevelToJson(*report.soil)) : nullptr;
   nlohmann::ordered_json timings = nlohmann::ordered_json::object();
   for (const StageTime& t : report.timings) timings[t.stage + "_s"] = t.seconds;
   json["timings"] = timings;
@@ -108,6 +110,10 @@ std::string BuildReportToText(const BuildReport& report) {
         "merged into the proxy: {} points ({} outside it, {} in voxels with too few)\n",
         report.merged_points, report.outliers_outside_proxy, report.outliers_in_sparse_voxels);
   }
+  text += report.soil
+              ? fmt::format("soil surface at z = {:.1f} mm (contrast {:.2f}, {} patches)\n",
+                            report.soil->z * 1e3, report.soil->contrast, report.soil->patches)
+              : std::string("soil surface not found: plant height from the proxy's base\n");
   if (report.accuracy) {
     const eval::EvalResult& a = *report.accuracy;
     text += fmt::format("against the ground truth: mean distance {:.3f} mm (RMS {:.3f} mm)",

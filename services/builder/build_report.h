@@ -29,6 +29,7 @@ struct BuildReport {
   std::vector<StageTime> timings;
   double peak_memory_mb = 0;  // of this process so far
   segmentation::MaskSummary masks;
+  std::optional<SoilLevel> soil;  // where the plant's height is measured from, when found
   // Present when a ground-truth mesh was given.
   std::optional<eval::EvalResult> accuracy;
 };

@@ -90,6 +90,11 @@ Reconstruction Reconstruct(dataset::ViewSet& set, const ReconstructOptions& opti
   }
   clock.Finish("proxy");
 
+  report("soil", 0, 1);
+  std::optional<SoilLevel> soil = FindSoilLevel(set.views, proxy.ToMvsBounds(), options.soil);
+  report("soil", 1, 1);
+  clock.Finish("soil");
+
   mvs::MvsPoints points;
   const auto mvs_progress = [&](const std::string& stage, size_t done, size_t total) {
     report("mvs " + stage, done, total);
@@ -103,8 +108,8 @@ Reconstruction Reconstruct(dataset::ViewSet& set, const ReconstructOptions& opti
   merge::MergedPoints merged;
   if (points.size() > 0) merged = merge::MergeIntoProxy(points, proxy.ToMvsBounds());
   clock.Finish("merge");
-  return {std::move(proxy), std::move(points), std::move(merged), std::move(masks),
-          std::move(timings)};
+  return {std::move(proxy), std::move(points),  std::move(merged),
+          std::move(masks), std::move(timings), soil};
 }
 
 }  // namespace avc::builder

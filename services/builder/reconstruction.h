@@ -17,6 +17,7 @@
 #include "core/mvs/plane_sweep/plane_sweep_mvs.h"
 #include "core/ppr/plant_proxy.h"
 #include "core/segmentation/fill_masks.h"
+#include "services/builder/soil_level.h"
 
 namespace avc::builder {
 
@@ -32,10 +33,11 @@ struct ReconstructOptions {
   MvsMethod method = MvsMethod::kPatch;
   mvs::PatchMvsOptions patch;
   mvs::PlaneSweepOptions sweep;
+  SoilLevelOptions soil;
 };
 
 struct StageTime {
-  std::string stage;  // "undistort", "masks", "proxy", "mvs", "merge"
+  std::string stage;  // "undistort", "masks", "proxy", "soil", "mvs", "merge"
   double seconds = 0;
 };
 
@@ -46,6 +48,8 @@ struct Reconstruction {
   merge::MergedPoints merged;
   segmentation::MaskSummary masks;
   std::vector<StageTime> timings;  // wall clock, for reports only (never in the products)
+  // The soil surface under the plant, where its height is measured from (soil_level.h).
+  std::optional<SoilLevel> soil;
 };
 
 // stage: what is running; done/total: its progress.

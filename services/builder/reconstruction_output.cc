@@ -63,6 +63,15 @@ std::vector<std::string> WriteReconstruction(const fs::path& dir, const dataset:
   }
   camera::WriteCamerasJson(dir / "cameras.json", cameras);
   written.push_back("cameras.json");
+  // The soil level is a product (plant height is measured from it): a stale one must not stay.
+  if (reconstruction.soil) {
+    std::ofstream soil(dir / "soil.json");
+    soil << SoilLevelToJson(*reconstruction.soil).dump(2) << "\n";
+    if (!soil) throw std::runtime_error("cannot write " + (dir / "soil.json").string());
+    written.push_back("soil.json");
+  } else {
+    fs::remove(dir / "soil.json");
+  }
   std::ofstream json(dir / "build.json");
   json << BuildReportToJson(report).dump(2) << "\n";
   if (!json) throw std::runtime_error("cannot write " + (dir / "build.json").string());

@@ -12,4 +12,8 @@ std::optional<double> PlantBaseZ(const mvs::MvsBounds& proxy) {
   return static_cast<double>(lowest) - 0.5 * proxy.voxel_size;
 }
 
+std::optional<double> PlantGroundZ(std::optional<double> soil_z, const mvs::MvsBounds& proxy) {
+  return soil_z ? soil_z : PlantBaseZ(proxy);
+}
+
 }  // namespace avc::surfacer

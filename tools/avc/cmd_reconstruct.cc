@@ -91,8 +91,9 @@ int RunReconstruct(const ReconstructArgs& args) {
       // Surfacing (paper §4) of the clusters and the plant's traits, as the surfacer would.
       // Phase 2 grows the cells where the views' plant masks see leaf.
       const surface::SurfaceImages images = surface::SurfaceImagesOf(set);
-      surfacer::SurfacerOptions surfacing;  // plant height from the proxy's base
-      surfacing.traits.ground_z = surfacer::PlantBaseZ(reconstruction.proxy.ToMvsBounds());
+      surfacer::SurfacerOptions surfacing;  // plant height from the soil, else the proxy's base
+      surfacing.traits.ground_z = surfacer::PlantGroundZ(builder::SoilZ(reconstruction.soil),
+                                                         reconstruction.proxy.ToMvsBounds());
       const surfacer::SurfacerResult surface =
           surfacer::SurfaceClusters(clusters, surfacing, &images);
       if (surface.problem.empty()) {
