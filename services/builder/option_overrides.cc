@@ -36,6 +36,7 @@ const std::map<std::string, Setter>& Setters() {
   using P = mvs::PatchMvsOptions;
   using S = mvs::PlaneSweepOptions;
   using X = ppr::ProxyOptions;
+  using L = SoilLevelOptions;
   static const std::map<std::string, Setter> setters = {
       {"patch.level", Field(&O::patch, &P::level)},
       {"patch.cell_size", Field(&O::patch, &P::cell_size)},
@@ -69,6 +70,13 @@ const std::map<std::string, Setter>& Setters() {
       {"proxy.min_plant_views", Field(&O::proxy, &X::min_plant_views)},
       {"proxy.final_voxel_size", Field(&O::proxy, &X::final_voxel_size)},
       {"proxy.resolution_increases", Field(&O::proxy, &X::resolution_increases)},
+      {"soil.inner_radius", Field(&O::soil, &L::inner_radius)},
+      {"soil.outer_radius", Field(&O::soil, &L::outer_radius)},
+      {"soil.search_below", Field(&O::soil, &L::search_below)},
+      {"soil.search_above", Field(&O::soil, &L::search_above)},
+      {"soil.min_views", Field(&O::soil, &L::min_views)},
+      {"soil.min_elevation_deg", Field(&O::soil, &L::min_elevation_deg)},
+      {"soil.max_contrast", Field(&O::soil, &L::max_contrast)},  // 0: never measure from soil
   };
   return setters;
 }
@@ -99,6 +107,7 @@ void ApplyOverride(const std::string& assignment, ReconstructOptions* options) {
     it->second(&changed, value);
     changed.patch.Validate();
     changed.sweep.Validate();
+    changed.soil.Validate();
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(fmt::format("override '{}': {}", assignment, e.what()));
   }

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 #include <opencv2/imgproc.hpp>
+#include <stdexcept>
 
 #include "core/util/file_io.h"
 
@@ -58,14 +59,15 @@ std::vector<Eigen::Vector2d> Annulus(const Eigen::Vector2d& centre, const SoilLe
 
 struct GreyView {
   const dataset::View* view;
-  cv::Mat grey;  // CV_32FC1, blurred
+  Eigen::Vector3d eye;  // the camera's centre, world
+  cv::Mat grey;         // CV_32FC1, blurred
 };
 
 std::vector<GreyView> PrepareViews(const std::vector<dataset::View>& views) {
   std::vector<GreyView> prepared;
   for (const dataset::View& view : views) {
     if (view.mask.empty() || view.image.empty()) continue;
-    GreyView grey{&view, {}};
+    GreyView grey{&view, view.camera.T_cam_world.inverse().translation(), {}};
     cv::Mat bytes;
     cv::cvtColor(view.image, bytes, cv::COLOR_BGR2GRAY);
     bytes.convertTo(grey.grey, CV_32FC1);
@@ -119,15 +121,18 @@ bool ViewPatch(const GreyView& view, const Eigen::Vector3d& centre, Patch* patch
 }
 
 // Mean correlation of the views' patches with their mean; kNotSeen when fewer than min_views
-// views see the whole patch as textured background.
+// views steep enough see the whole patch as textured background.
 double PatchAgreement(const std::vector<GreyView>& views, const Eigen::Vector3d& centre,
-                      int min_views) {
+                      const SoilLevelOptions& options) {
+  const double min_sine = std::sin(options.min_elevation_deg * std::numbers::pi / 180.0);
   std::vector<Patch> patches;
   Patch patch;
   for (const GreyView& view : views) {
+    const Eigen::Vector3d to_camera = view.eye - centre;
+    if (to_camera.z() < min_sine * to_camera.norm()) continue;
     if (ViewPatch(view, centre, &patch)) patches.push_back(patch);
   }
-  if (static_cast<int>(patches.size()) < min_views) return kNotSeen;
+  if (static_cast<int>(patches.size()) < options.min_views) return kNotSeen;
   Patch mean{};
   for (const Patch& p : patches)
     for (int k = 0; k < kSamples; ++k) mean[k] += p[k];
@@ -166,7 +171,7 @@ std::vector<Plane> Sweep(const std::vector<GreyView>& views,
   for (int i = 0; i < count; ++i) {
     const double z = z_from + i * step;
     tbb::parallel_for(size_t{0}, annulus.size(), [&](size_t k) {
-      agreement[k] = PatchAgreement(views, {annulus[k].x(), annulus[k].y(), z}, options.min_views);
+      agreement[k] = PatchAgreement(views, {annulus[k].x(), annulus[k].y(), z}, options);
     });
     std::vector<double> disagreement;
     for (double a : agreement) {
@@ -186,9 +191,31 @@ const Plane& Best(const std::vector<Plane>& planes) {
 
 }  // namespace
 
+void SoilLevelOptions::Validate() const {
+  const auto require = [](bool ok, const char* field, double value) {
+    if (!ok) {
+      throw std::invalid_argument(
+          fmt::format("SoilLevelOptions.{} = {} is out of range", field, value));
+    }
+  };
+  require(inner_radius >= 0.0, "inner_radius", inner_radius);
+  require(outer_radius > inner_radius, "outer_radius", outer_radius);
+  require(sample_spacing > 0.0, "sample_spacing", sample_spacing);
+  require(search_below >= 0.0, "search_below", search_below);
+  require(search_above >= 0.0, "search_above", search_above);
+  require(coarse_step > 0.0, "coarse_step", coarse_step);
+  require(fine_step > 0.0 && fine_step <= coarse_step, "fine_step", fine_step);
+  require(min_views >= 2, "min_views", min_views);
+  require(min_patches >= 1, "min_patches", min_patches);
+  require(min_elevation_deg >= 0.0 && min_elevation_deg < 90.0, "min_elevation_deg",
+          min_elevation_deg);
+  require(max_contrast >= 0.0, "max_contrast", max_contrast);
+}
+
 std::optional<SoilLevel> FindSoilLevel(const std::vector<dataset::View>& views,
                                        const mvs::MvsBounds& proxy,
                                        const SoilLevelOptions& options) {
+  options.Validate();
   if (!options.enabled) return std::nullopt;
   const std::optional<Stem> stem = StemBase(proxy);
   if (!stem) return std::nullopt;

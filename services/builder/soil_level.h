@@ -35,10 +35,16 @@ struct SoilLevelOptions {
   double coarse_step = 0.0015;    // m between planes of the first sweep
   double fine_step = 0.00025;     // m between planes of the second, around the first's best
   int min_views = 3;              // per patch, seeing textured background all over it
-  int min_patches = 100;          // per plane, with enough views
+  // Only views looking down on a patch at least this steeply (degrees above the horizon) count:
+  // from lower, the pot's rim hides the soil and the views see its wall instead.
+  double min_elevation_deg = 30.0;
+  int min_patches = 100;  // per plane, with enough views
   // The winning plane's median disagreement (1 - correlation) must be at most this fraction of
   // the median over the first sweep's planes; a flat sweep means no soil was seen.
   double max_contrast = 0.6;
+
+  // Throws std::invalid_argument naming the bad field (SoilLevelOptions.<field>).
+  void Validate() const;
 };
 
 struct SoilLevel {
@@ -49,7 +55,7 @@ struct SoilLevel {
 
 // views: undistorted, with plant masks. The stem is taken at the proxy's base: the centroid of its
 // occupied voxels within 10 mm of the lowest. nullopt when disabled, the proxy is empty, too few
-// patches are seen, or no plane stands out.
+// patches are seen, or no plane stands out. Throws std::invalid_argument for bad options.
 std::optional<SoilLevel> FindSoilLevel(const std::vector<dataset::View>& views,
                                        const mvs::MvsBounds& proxy,
                                        const SoilLevelOptions& options = {});

@@ -25,6 +25,8 @@ TEST(OptionOverrides, SetsIntegerAndRealFieldsOfEachSection) {
   ApplyOverride("patch.ncc_threshold=0.8", &options);
   ApplyOverride("sweep.best_k=3", &options);
   ApplyOverride("proxy.background_votes_allowed=2", &options);
+  ApplyOverride("soil.min_elevation_deg=40", &options);
+  EXPECT_DOUBLE_EQ(options.soil.min_elevation_deg, 40.0);
   EXPECT_EQ(options.patch.window, 7);
   EXPECT_DOUBLE_EQ(options.patch.ncc_threshold, 0.8);
   EXPECT_EQ(options.sweep.best_k, 3);
@@ -39,6 +41,8 @@ TEST(OptionOverrides, RefusesUnknownNamesBadNumbersAndInvalidValuesUnchanged) {
   EXPECT_NE(ErrorOf("patch.window").find("expected section.field=value"), std::string::npos);
   EXPECT_NE(ErrorOf("patch.window=7.5").find("not a number"), std::string::npos);
   EXPECT_NE(ErrorOf("patch.window=6").find("PatchMvsOptions.window"), std::string::npos);
+  EXPECT_NE(ErrorOf("soil.outer_radius=0.01").find("SoilLevelOptions.outer_radius"),
+            std::string::npos);
   ReconstructOptions options;
   EXPECT_THROW(ApplyOverride("patch.window=6", &options), std::invalid_argument);
   EXPECT_EQ(options.patch.window, ReconstructOptions{}.patch.window);

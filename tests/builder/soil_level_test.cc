@@ -50,22 +50,14 @@ dataset::View RenderView(const camera::Camera& camera, bool textured) {
   view.camera = camera;
   view.image = cv::Mat(k.height, k.width, CV_8UC3, cv::Scalar(90, 90, 90));
   view.mask = cv::Mat(k.height, k.width, CV_8UC1, cv::Scalar(0));
-  const Eigen::Isometry3d world_from_camera = camera.T_cam_world.inverse();
-  const Eigen::Vector3d centre = world_from_camera.translation();
-  for (int row = 0; row < k.height; ++row) {
-    for (int column = 0; column < k.width; ++column) {
-      const Eigen::Vector3d ray = world_from_camera.linear() *
-                                  Eigen::Vector3d((column - k.cx) / k.fx, (row - k.cy) / k.fy, 1.0);
-      if (!(ray.z() < 0.0)) continue;
-      const Eigen::Vector3d hit = centre + (kSoilZ - centre.z()) / ray.z() * ray;
-      if (hit.head<2>().norm() <= kStemRadius) {
-        view.mask.at<uint8_t>(row, column) = 255;
-        continue;
-      }
-      const double grey = textured ? 60.0 + 120.0 * Grain(hit.x(), hit.y()) : 110.0;
-      view.image.at<cv::Vec3b>(row, column) = cv::Vec3b::all(static_cast<uint8_t>(grey));
+  eval::test::ForEachPlaneHit(camera, kSoilZ, [&](int row, int column, const Eigen::Vector3d& hit) {
+    if (hit.head<2>().norm() <= kStemRadius) {
+      view.mask.at<uint8_t>(row, column) = 255;
+      return;
     }
-  }
+    const double grey = textured ? 60.0 + 120.0 * Grain(hit.x(), hit.y()) : 110.0;
+    view.image.at<cv::Vec3b>(row, column) = cv::Vec3b::all(static_cast<uint8_t>(grey));
+  });
   return view;
 }
 

@@ -108,4 +108,22 @@ inline camera::Camera LookAt(const Eigen::Vector3d& centre, const Eigen::Vector3
   return camera;
 }
 
+// Calls visit(row, column, hit) for every pixel whose ray (through the pixel's centre) meets the
+// horizontal plane z = height in front of the camera, with the point it meets.
+template <typename Visit>
+void ForEachPlaneHit(const camera::Camera& camera, double height, Visit visit) {
+  const camera::Intrinsics& k = camera.intrinsics;
+  const Eigen::Isometry3d world_from_camera = camera.T_cam_world.inverse();
+  const Eigen::Vector3d centre = world_from_camera.translation();
+  for (int row = 0; row < k.height; ++row) {
+    for (int column = 0; column < k.width; ++column) {
+      const Eigen::Vector3d ray = world_from_camera.linear() *
+                                  Eigen::Vector3d((column - k.cx) / k.fx, (row - k.cy) / k.fy, 1.0);
+      const double along = (height - centre.z()) / ray.z();
+      if (!(along > 0.0)) continue;
+      visit(row, column, Eigen::Vector3d(centre + along * ray));
+    }
+  }
+}
+
 }  // namespace avc::eval::test

@@ -28,17 +28,9 @@ inline camera::Camera LookingAt(const Eigen::Vector3d& centre, const Eigen::Vect
 inline cv::Mat DiscMask(const camera::Camera& camera, double radius, double height = 0.0) {
   const camera::Intrinsics& k = camera.intrinsics;
   cv::Mat mask(k.height, k.width, CV_8UC1, cv::Scalar(0));
-  const Eigen::Isometry3d world_from_camera = camera.T_cam_world.inverse();
-  const Eigen::Vector3d centre = world_from_camera.translation();
-  for (int row = 0; row < k.height; ++row) {
-    for (int column = 0; column < k.width; ++column) {
-      const Eigen::Vector3d ray = world_from_camera.linear() *
-                                  Eigen::Vector3d((column - k.cx) / k.fx, (row - k.cy) / k.fy, 1.0);
-      if (!(ray.z() < 0.0)) continue;
-      const Eigen::Vector3d hit = centre + (height - centre.z()) / ray.z() * ray;
-      if (hit.head<2>().norm() <= radius) mask.at<uint8_t>(row, column) = 255;
-    }
-  }
+  eval::test::ForEachPlaneHit(camera, height, [&](int row, int column, const Eigen::Vector3d& hit) {
+    if (hit.head<2>().norm() <= radius) mask.at<uint8_t>(row, column) = 255;
+  });
   return mask;
 }
 
