@@ -26,9 +26,9 @@ void PrintTable(const std::vector<SurfaceCaseResult>& cases, const SurfaceCaseOp
       "Baselines ignore the clusters. Time: median of {}, meshing only (+ clustering for\n"
       "Algorithm 2 in the last column).\n",
       options.points, 1e3 * options.noise, options.repeats);
-  std::cout << fmt::format("{:<10} {:<20} {:>6} {:>8} {:>8} {:>9} {:>6} {:>7} {:>8} {:>9}\n",
+  std::cout << fmt::format("{:<10} {:<20} {:>6} {:>8} {:>8} {:>9} {:>6} {:>6} {:>7} {:>8} {:>9}\n",
                            "plant", "method", "area", "RMSE mm", "mean mm", "leaves 1c", "strict",
-                           "faces", "mesh s", "cluster s");
+                           "height", "faces", "mesh s", "cluster s");
   for (const SurfaceCaseResult& c : cases) {
     for (const SurfaceMethodResult& m : c.methods) {
       const std::string lead = fmt::format("{:<10} {:<20}", c.preset, m.method);
@@ -37,9 +37,10 @@ void PrintTable(const std::vector<SurfaceCaseResult>& cases, const SurfaceCaseOp
         continue;
       }
       std::cout << fmt::format(
-          "{} {:>6.3f} {:>8.3f} {:>8.3f} {:>3}/{:<3} {:>3.0f}% {:>6} {:>7} {:>8.3f} {:>9}\n", lead,
-          m.area_ratio, 1e3 * m.rmse, 1e3 * m.mean, m.connected_leaves, m.leaves,
-          100 * m.connected_fraction, m.connected_leaves_strict, m.faces, m.seconds,
+          "{} {:>6.3f} {:>8.3f} {:>8.3f} {:>3}/{:<3} {:>3.0f}% {:>6} {:>6.3f} {:>7} {:>8.3f} "
+          "{:>9}\n",
+          lead, m.area_ratio, 1e3 * m.rmse, 1e3 * m.mean, m.connected_leaves, m.leaves,
+          100 * m.connected_fraction, m.connected_leaves_strict, m.height_ratio, m.faces, m.seconds,
           m.cluster_seconds > 0 ? fmt::format("{:.3f}", m.cluster_seconds) : std::string("-"));
     }
     std::cout << fmt::format("{:<10} spacing {:.2f} mm, truth area {:.1f} cm^2\n", "",
@@ -68,6 +69,7 @@ nlohmann::json ToJson(const std::vector<SurfaceCaseResult>& cases,
                     {"connected_leaves", m.connected_leaves},
                     {"connected_leaves_strict", m.connected_leaves_strict},
                     {"connected_fraction", m.connected_fraction},
+                    {"height_ratio", m.height_ratio},
                     {"faces", m.faces},
                     {"seconds", m.seconds},
                     {"cluster_seconds", m.cluster_seconds}});

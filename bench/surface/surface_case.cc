@@ -4,6 +4,7 @@
 #include <functional>
 #include <stdexcept>
 
+#include "bench/mvs/plant_organs.h"
 #include "bench/summary.h"
 #include "bench/surface/leaf_connectivity.h"
 #include "core/cluster/cluster_plant.h"
@@ -14,6 +15,7 @@
 #include "core/surface/baselines/poisson_trimmed.h"
 #include "core/surface/baselines/pound_patches.h"
 #include "core/surface/surface_reconstruction.h"
+#include "core/traits/plant_traits.h"
 #include "tests/surface/surface_test_points.h"  // the plant test's leaf sampling, reused
 
 namespace avc::bench {
@@ -35,8 +37,14 @@ geometry::Mesh TimeMedian(int repeats, const Mesher& mesher, double* seconds) {
   return mesh;
 }
 
-SurfaceMethodResult Score(const std::string& method, const geometry::Mesh& truth, int repeats,
-                          const Mesher& mesher) {
+// The leaves' height above the soil, which the height trait of each mesh is compared with.
+struct HeightTruth {
+  double ground_z = 0;  // m: the soil's mean height
+  double height = 0;    // m: the leaves' top above it
+};
+
+SurfaceMethodResult Score(const std::string& method, const geometry::Mesh& truth,
+                          const HeightTruth& height, int repeats, const Mesher& mesher) {
   SurfaceMethodResult result;
   result.method = method;
   try {
@@ -51,6 +59,9 @@ SurfaceMethodResult Score(const std::string& method, const geometry::Mesh& truth
     result.connected_leaves = leaves.one_component;
     result.connected_leaves_strict = leaves.one_component_strict;
     result.connected_fraction = leaves.Fraction();
+    traits::TraitOptions traits;
+    traits.ground_z = height.ground_z;
+    result.height_ratio = traits::MeasureTraits(mesh, traits).height / height.height;
     result.ok = true;
   } catch (const std::exception& error) {
     result.error = error.what();
@@ -88,20 +99,25 @@ SurfaceCaseResult RunSurfaceCase(sim::PlantPreset preset, const SurfaceCaseOptio
   result.truth_area = geometry::SurfaceArea(truth);
   const geometry::PointCloud& cloud = leaf_clusters.cloud;
   const int n = options.repeats;
-  result.methods.push_back(Score("ours, leaf clusters", truth, n,
+  HeightTruth height;
+  height.ground_z = MeasureTruthTraits(scene.mesh).ground_z;
+  traits::TraitOptions traits;
+  traits.ground_z = height.ground_z;
+  height.height = traits::MeasureTraits(truth, traits).height;
+  result.methods.push_back(Score("ours, leaf clusters", truth, height, n,
                                  [&] { return surface::ReconstructSurface(leaf_clusters).mesh; }));
-  result.methods.push_back(Score("ours, Algorithm 2", truth, n,
+  result.methods.push_back(Score("ours, Algorithm 2", truth, height, n,
                                  [&] { return surface::ReconstructSurface(algorithm2).mesh; }));
   result.methods.back().cluster_seconds = cluster_seconds;
   namespace baselines = surface::baselines;
+  result.methods.push_back(Score("Poisson, trimmed", truth, height, n,
+                                 [&] { return baselines::PoissonTrimmed(cloud); }));
+  result.methods.push_back(Score("greedy projection", truth, height, n,
+                                 [&] { return baselines::GreedyProjection(cloud); }));
   result.methods.push_back(
-      Score("Poisson, trimmed", truth, n, [&] { return baselines::PoissonTrimmed(cloud); }));
+      Score("advancing front", truth, height, n, [&] { return baselines::AdvancingFront(cloud); }));
   result.methods.push_back(
-      Score("greedy projection", truth, n, [&] { return baselines::GreedyProjection(cloud); }));
-  result.methods.push_back(
-      Score("advancing front", truth, n, [&] { return baselines::AdvancingFront(cloud); }));
-  result.methods.push_back(
-      Score("Pound patches", truth, n, [&] { return baselines::PoundPatches(cloud); }));
+      Score("Pound patches", truth, height, n, [&] { return baselines::PoundPatches(cloud); }));
   return result;
 }
 

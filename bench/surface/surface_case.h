@@ -31,6 +31,7 @@ struct SurfaceMethodResult {
   int leaves = 0;
   int connected_leaves = 0;         // leaf_connectivity.h: attribution settled on the mesh
   int connected_leaves_strict = 0;  // ... every face given to its nearest leaf
+  double height_ratio = 0;          // the height trait / the leaves' height, both above the soil
   size_t faces = 0;
   double seconds = 0;          // median over the repeats (meshing only)
   double cluster_seconds = 0;  // Algorithm 2 clustering, when the method uses it

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <functional>
 
 namespace avc::bench {
@@ -49,6 +50,10 @@ std::vector<TargetCheck> CheckSurfaceTargets(const std::vector<SurfaceCaseResult
       ">= 90 % of leaves one component", cases,
       [](const auto&, const auto& m) { return m.connected_fraction >= 0.9; },
       [](const auto& m) { return fmt::format("{}/{}", m.connected_leaves, m.leaves); }));
+  checks.push_back(Check(
+      "height trait within 2 %", cases,
+      [](const auto&, const auto& m) { return std::abs(m.height_ratio - 1.0) <= 0.02; },
+      [](const auto& m) { return fmt::format("{:.3f}", m.height_ratio); }));
   checks.push_back(Check(
       "<= 10 s for 3000 points", cases,
       [](const auto&, const auto& m) { return m.seconds + m.cluster_seconds <= 10.0; },
