@@ -86,7 +86,8 @@ PlantTraits MeasureTraits(const geometry::Mesh& mesh, const TraitOptions& option
     lowest = std::min(lowest, static_cast<double>(p.z()));
     highest = std::max(highest, static_cast<double>(p.z()));
   }
-  traits.height = std::max(0.0, highest - options.ground_z.value_or(lowest));
+  traits.height_base_z = options.ground_z.value_or(lowest);
+  traits.height = std::max(0.0, highest - traits.height_base_z);
   traits.width = HorizontalWidth(points);
   traits.hull_volume = ConvexHullVolume(points);
 

@@ -38,10 +38,11 @@ struct GroupTraits {
 };
 
 struct PlantTraits {
-  double height = 0;       // m: highest point above ground_z (or the lowest point)
-  double width = 0;        // m: largest horizontal distance between two vertices
-  double hull_volume = 0;  // m^3: convex hull of the vertices
-  double total_area = 0;   // m^2: the whole surface, one-sided (the leaf area)
+  double height = 0;         // m: highest point above ground_z (or the lowest point)
+  double height_base_z = 0;  // m, world z the height is measured from
+  double width = 0;          // m: largest horizontal distance between two vertices
+  double hull_volume = 0;    // m^3: convex hull of the vertices
+  double total_area = 0;     // m^2: the whole surface, one-sided (the leaf area)
   size_t faces = 0;
   std::vector<ClusterTraits> clusters;  // by cluster id
   std::vector<GroupTraits> groups;      // by group id

@@ -25,6 +25,7 @@ void Row(std::ostream& out, const char* scope, const std::string& id, const char
 void WriteTraitsCsv(const PlantTraits& traits, std::ostream& out) {
   out << "scope,id,trait,value,unit\n";
   Row(out, "plant", "", "height", traits.height, "m");
+  Row(out, "plant", "", "height_base_z", traits.height_base_z, "m");
   Row(out, "plant", "", "width", traits.width, "m");
   Row(out, "plant", "", "hull_volume", traits.hull_volume, "m3");
   Row(out, "plant", "", "total_area", traits.total_area, "m2");
@@ -46,6 +47,7 @@ void WriteTraitsCsv(const PlantTraits& traits, std::ostream& out) {
 nlohmann::json TraitsToJson(const PlantTraits& traits) {
   nlohmann::json json;
   json["height_m"] = traits.height;
+  json["height_base_z_m"] = traits.height_base_z;
   json["width_m"] = traits.width;
   json["hull_volume_m3"] = traits.hull_volume;
   json["total_area_m2"] = traits.total_area;

@@ -81,9 +81,10 @@ std::vector<GreyView> PrepareViews(const std::vector<dataset::View>& views) {
 bool SampleBackground(const GreyView& view, const Eigen::Vector2d& pixel, double* grey) {
   const double u = pixel.x();
   const double v = pixel.y();
-  const int u0 = static_cast<int>(std::floor(u));
-  const int v0 = static_cast<int>(std::floor(v));
-  if (u0 < 0 || v0 < 0 || u0 + 1 >= view.grey.cols || v0 + 1 >= view.grey.rows) return false;
+  // Compared before the conversion to int, which a far-off projection would overflow.
+  if (!(u >= 0.0 && v >= 0.0 && u < view.grey.cols - 1 && v < view.grey.rows - 1)) return false;
+  const int u0 = static_cast<int>(u);
+  const int v0 = static_cast<int>(v);
   const cv::Mat& mask = view.view->mask;
   if (mask.at<uint8_t>(v0, u0) || mask.at<uint8_t>(v0, u0 + 1) || mask.at<uint8_t>(v0 + 1, u0) ||
       mask.at<uint8_t>(v0 + 1, u0 + 1)) {

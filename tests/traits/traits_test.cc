@@ -110,6 +110,7 @@ TEST(PlantTraits, HeightFromGivenGroundAndGroupsOfClusters) {
   options.group_of_cluster = {{1, 10}, {2, 10}};
   const PlantTraits traits = MeasureTraits(mesh, options);
   EXPECT_NEAR(traits.height, 0.06, 1e-6);
+  EXPECT_DOUBLE_EQ(traits.height_base_z, -0.01);
   ASSERT_EQ(traits.groups.size(), 2u);
   EXPECT_EQ(traits.groups[0].group, 3);
   EXPECT_NEAR(traits.groups[0].area, 1e-4, 1e-9);
@@ -175,6 +176,10 @@ TEST(TraitsWriter, CsvAndJsonCarryTheSameFigures) {
   EXPECT_NEAR(CsvValue(text, "group,7,area,"), 4e-4, 1e-10) << text;
   const nlohmann::json json = TraitsToJson(traits);
   EXPECT_NEAR(json["total_area_m2"].get<double>(), 4e-4, 1e-10);
+  // Without a ground the height is measured from the mesh's lowest point.
+  EXPECT_NEAR(json["height_base_z_m"].get<double>(), traits.height_base_z, 1e-15);
+  EXPECT_NEAR(CsvValue(text, "plant,,height_base_z,"), traits.height_base_z, 1e-15) << text;
+  EXPECT_LT(traits.height_base_z, 0.0);
   EXPECT_NEAR(json["clusters"][0]["inclination_deg"].get<double>(), 45.0, 1e-4);
   EXPECT_NEAR(json["clusters"][0]["azimuth_deg"].get<double>(), 0.0, 1e-4);
 
