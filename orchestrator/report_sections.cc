@@ -89,7 +89,11 @@ std::string KeyFiguresSection(const ReportInputs& in) {
   const json build = in.report.value("build", json::object());
   std::string html = "<h2>Key figures</h2>\n<div class=\"figures\">\n";
   html += Figure("leaf area", Number(traits, "total_area_m2", 1e4, 1), "cm²");
-  html += Figure("height", Number(traits, "height_m", 1e2, 1), "cm");
+  // The builder's soil level (build.json "soil") is where the height starts; without it, the
+  // proxy's base.
+  const bool from_soil = build.contains("soil") && build["soil"].is_object();
+  html += Figure(from_soil ? "height above the soil" : "height above the proxy's base",
+                 Number(traits, "height_m", 1e2, 1), "cm");
   html += Figure("width", Number(traits, "width_m", 1e2, 1), "cm");
   html += Figure("hull volume", Number(traits, "hull_volume_m3", 1e6, 1), "cm³");
   const size_t clusters = traits.contains("clusters") ? traits["clusters"].size() : 0;

@@ -38,8 +38,8 @@ TEST(ReportHtml, ShowsTheScanItsFiguresViewsAndClusters) {
   EXPECT_NE(html.find("2023-11-14 22:13:20 UTC"), std::string::npos);
   EXPECT_NE(html.find("state DONE"), std::string::npos);
   EXPECT_NE(html.find("images captured 3, kept 2"), std::string::npos);
-  EXPECT_NE(html.find("78.9 cm²"), std::string::npos);                      // leaf area
-  EXPECT_NE(html.find("12.3 cm"), std::string::npos);                       // height
+  EXPECT_NE(html.find("78.9 cm²"), std::string::npos);  // leaf area
+  EXPECT_NE(html.find("height above the soil<b>12.3 cm"), std::string::npos);
   EXPECT_NE(html.find("9.9 cm"), std::string::npos);                        // width
   EXPECT_NE(html.find("456.0 cm³"), std::string::npos);                     // hull volume
   EXPECT_NE(html.find("<td class=\"num\">0.889</td>"), std::string::npos);  // ground truth

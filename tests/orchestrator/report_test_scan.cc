@@ -107,6 +107,7 @@ void WriteTestScan(const fs::path& dir, const geometry::Mesh& mesh) {
       {"build",
        {{"points", 1234},
         {"merged", {{"points", 567}}},
+        {"soil", {{"z_m", 0.118}, {"contrast", 0.3}, {"patches", 1800}}},
         {"ground_truth",
          {{"accuracy",
            {{"mean_m", 0.0012}, {"rmse_m", 0.0015}, {"median_m", 0.001}, {"p90_m", 0.002}}},
