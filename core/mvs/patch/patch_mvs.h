@@ -79,7 +79,13 @@ struct PatchMvsOptions {
   // broadleaf scan (30 views 1280x960): P(1 mm) 0.864 -> 0.926, mean error 0.44 -> 0.32 mm,
   // R(2 mm) 0.53 -> 0.45; at 640x480 and below a leaf is too few windows wide (a rosette at
   // 640x480 kept 1,396 of 8,644 points, P(1 mm) 0.44 -> 0.29).
-  int whole_patch_in_mask = -1;
+  // Off by default since the surfacer grows cells over the masks (2026-12-03): the extra points
+  // seed cells where there were none, and the meshes gain more than the points lose. Simulated
+  // 3x10 scans, off against automatic: points 1.3-3.1x; point P(1 mm) broadleaf 0.957 -> 0.882,
+  // bushy 0.996 -> 0.969, rosette 0.749 -> 0.748; leaf mesh F(2 mm) rosette 0.44 -> 0.60,
+  // broadleaf 0.934 -> 0.940, strap 0.75 -> 0.87, bushy 0.977 -> 0.982 (`avc bench surface
+  // --scans`); the demo's broadleaf leaf area 0.953 -> 0.985 at P(2 mm) 98.9 -> 98.8 %.
+  int whole_patch_in_mask = 0;
   // Patches must lie within this many proxy voxels of an occupied voxel (bounds not empty).
   int bounds_dilation = 1;
 
