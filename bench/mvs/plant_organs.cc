@@ -33,10 +33,7 @@ TruthTraits MeasureTruthTraits(const geometry::Mesh& mesh) {
       high = std::max(high, static_cast<double>(organs.vertices[t[k]].z()));
     }
     if (organs.face_labels.empty() || !geometry::labels::IsLeaf(organs.face_labels[f])) continue;
-    const Eigen::Vector3d a = organs.vertices[t[0]].cast<double>();
-    truth.leaf_area += 0.5 * (organs.vertices[t[1]].cast<double>() - a)
-                                 .cross(organs.vertices[t[2]].cast<double>() - a)
-                                 .norm();
+    truth.leaf_area += geometry::FaceArea(organs, t);
   }
   double soil = 0.0;
   size_t soil_corners = 0;

@@ -137,13 +137,6 @@ struct PieceCounts {
 };
 constexpr double kMostlyOne = 0.95;
 
-double TriangleArea(const geometry::Mesh& mesh, const Eigen::Vector3i& t) {
-  const Eigen::Vector3d a = mesh.vertices[t[0]].cast<double>();
-  return 0.5 * (mesh.vertices[t[1]].cast<double>() - a)
-                   .cross(mesh.vertices[t[2]].cast<double>() - a)
-                   .norm();
-}
-
 PieceCounts CountPieces(const std::vector<int32_t>& labels, const geometry::Mesh& mesh,
                         const std::vector<int32_t>& leaf_of_face) {
   std::map<int32_t, geometry::Mesh> faces_of_leaf;
@@ -161,7 +154,7 @@ PieceCounts CountPieces(const std::vector<int32_t>& labels, const geometry::Mesh
     std::vector<double> area(components, 0.0);
     double total = 0.0;
     for (size_t f = 0; f < leaf.faces.size(); ++f) {
-      const double a = TriangleArea(leaf, leaf.faces[f]);
+      const double a = geometry::FaceArea(leaf, leaf.faces[f]);
       area[component[f]] += a;
       total += a;
     }

@@ -7,15 +7,10 @@
 #include <stdexcept>
 
 #include "core/cluster/point_grid.h"
+#include "core/util/upper_median.h"
 
 namespace avc::cluster {
 namespace {
-
-double Median(std::vector<double> values) {
-  const size_t mid = values.size() / 2;
-  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(mid), values.end());
-  return values[mid];
-}
 
 // Nearest-neighbour distances, searching within radius; infinity where none was found.
 std::vector<double> NearestDistances(const std::vector<Eigen::Vector3f>& points, float radius) {
@@ -53,7 +48,7 @@ DataScale EstimateDataScale(const std::vector<Eigen::Vector3f>& points) {
   float radius = static_cast<float>(diagonal / std::sqrt(static_cast<double>(points.size())));
   for (int attempt = 0; attempt < 20; ++attempt, radius *= 2.0f) {
     const std::vector<double> nearest = NearestDistances(points, radius);
-    const double median = Median(nearest);
+    const double median = UpperMedian(nearest);
     if (std::isfinite(median)) {
       scale.spacing = median;
       break;
@@ -84,7 +79,7 @@ DataScale EstimateDataScale(const std::vector<Eigen::Vector3f>& points) {
     solver.computeDirect(covariance, Eigen::EigenvaluesOnly);
     residuals.push_back(std::sqrt(std::max(0.0, solver.eigenvalues()[0])));
   }
-  scale.noise = residuals.empty() ? 0.0 : Median(residuals);
+  scale.noise = residuals.empty() ? 0.0 : UpperMedian(residuals);
   return scale;
 }
 

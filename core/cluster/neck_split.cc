@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "core/cluster/pca.h"
+#include "core/util/upper_median.h"
 
 namespace avc::cluster {
 namespace {

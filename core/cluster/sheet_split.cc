@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/util/upper_median.h"
+
 namespace avc::cluster {
 namespace {
 

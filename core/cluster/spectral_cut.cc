@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "core/cluster/pca.h"
+#include "core/util/upper_median.h"
 
 namespace avc::cluster {
 namespace {
@@ -101,13 +102,6 @@ std::vector<float> EdgeElevations(const std::vector<LocalEdge>& edges,
     elevations[e] = rise * rise / squared_length;
   }
   return elevations;
-}
-
-float UpperMedian(std::vector<float> values) {
-  if (values.empty()) return 0.0f;
-  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-  std::nth_element(values.begin(), middle, values.end());
-  return *middle;
 }
 
 std::vector<float> BendWeights(const std::vector<float>& bends, double bend_factor) {

@@ -43,9 +43,6 @@ std::vector<float> EdgeElevations(const std::vector<LocalEdge>& edges,
                                   const std::vector<uint32_t>& cluster,
                                   const std::vector<Eigen::Vector3f>& local_normals);
 
-// The element at position size / 2 after partial sorting (the upper median); 0 when empty.
-float UpperMedian(std::vector<float> values);
-
 // exp(-b / (bend_factor * median b)): an edge bent much more than is typical in the cluster is
 // weak. The floor 1e-3 keeps every vertex's degree positive. All 1 when bend_factor <= 0 or the
 // median bend is 0.

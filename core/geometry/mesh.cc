@@ -87,14 +87,16 @@ void Mesh::Append(const Mesh& other) {
   for (const Eigen::Vector3i& face : other.faces) faces.push_back(face + offset);
 }
 
+double FaceArea(const Mesh& mesh, const Eigen::Vector3i& face) {
+  const Eigen::Vector3d a = mesh.vertices[face[0]].cast<double>();
+  const Eigen::Vector3d b = mesh.vertices[face[1]].cast<double>();
+  const Eigen::Vector3d c = mesh.vertices[face[2]].cast<double>();
+  return 0.5 * (b - a).cross(c - a).norm();
+}
+
 double SurfaceArea(const Mesh& mesh) {
   double area = 0;
-  for (const Eigen::Vector3i& f : mesh.faces) {
-    const Eigen::Vector3d a = mesh.vertices[f[0]].cast<double>();
-    const Eigen::Vector3d b = mesh.vertices[f[1]].cast<double>();
-    const Eigen::Vector3d c = mesh.vertices[f[2]].cast<double>();
-    area += 0.5 * (b - a).cross(c - a).norm();
-  }
+  for (const Eigen::Vector3i& f : mesh.faces) area += FaceArea(mesh, f);
   return area;
 }
 

@@ -46,6 +46,8 @@ struct Mesh {
 };
 
 // Sum of triangle areas (m^2).
+// Area of one face (m^2).
+double FaceArea(const Mesh& mesh, const Eigen::Vector3i& face);
 double SurfaceArea(const Mesh& mesh);
 // Axis-aligned bounds; both zero for an empty mesh.
 void Bounds(const Mesh& mesh, Eigen::Vector3f* min, Eigen::Vector3f* max);

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "core/util/file_io.h"
+#include "core/util/upper_median.h"
 
 namespace avc::builder {
 namespace {
@@ -32,17 +33,16 @@ struct Stem {
 };
 
 std::optional<Stem> StemBase(const mvs::MvsBounds& proxy) {
-  if (proxy.empty()) return std::nullopt;
-  float lowest = proxy.occupied_centres.front().z();
-  for (const Eigen::Vector3f& c : proxy.occupied_centres) lowest = std::min(lowest, c.z());
+  const std::optional<float> lowest = proxy.LowestCentreZ();
+  if (!lowest) return std::nullopt;
   Eigen::Vector2d sum = Eigen::Vector2d::Zero();
   int count = 0;
   for (const Eigen::Vector3f& c : proxy.occupied_centres) {
-    if (c.z() > lowest + kStemBaseBand) continue;
+    if (c.z() > *lowest + kStemBaseBand) continue;
     sum += c.head<2>().cast<double>();
     ++count;
   }
-  return Stem{sum / count, static_cast<double>(lowest) - 0.5 * proxy.voxel_size};
+  return Stem{sum / count, *proxy.BottomZ()};
 }
 
 std::vector<Eigen::Vector2d> Annulus(const Eigen::Vector2d& centre, const SoilLevelOptions& o) {
@@ -149,12 +149,6 @@ double PatchAgreement(const std::vector<GreyView>& views, const Eigen::Vector3d&
   return agreement / static_cast<double>(patches.size());
 }
 
-double Median(std::vector<double> values) {
-  const size_t middle = values.size() / 2;
-  std::nth_element(values.begin(), values.begin() + middle, values.end());
-  return values[middle];
-}
-
 struct Plane {
   double z = 0;
   double disagreement = 0;  // median over the seen patches of 1 - agreement
@@ -179,7 +173,7 @@ std::vector<Plane> Sweep(const std::vector<GreyView>& views,
       if (a != kNotSeen) disagreement.push_back(1.0 - a);
     }
     if (static_cast<int>(disagreement.size()) < options.min_patches) continue;
-    planes.push_back({z, Median(disagreement), disagreement.size()});
+    planes.push_back({z, UpperMedian(disagreement), disagreement.size()});
   }
   return planes;
 }
@@ -230,7 +224,7 @@ std::optional<SoilLevel> FindSoilLevel(const std::vector<dataset::View>& views,
   if (coarse.size() < 3) return std::nullopt;
   std::vector<double> disagreements;
   for (const Plane& plane : coarse) disagreements.push_back(plane.disagreement);
-  const double typical = Median(disagreements);
+  const double typical = UpperMedian(disagreements);
   const double around = Best(coarse).z;
   const std::vector<Plane> fine = Sweep(prepared, annulus, around - options.coarse_step,
                                         around + options.coarse_step, options.fine_step, options);
