@@ -219,7 +219,9 @@ struct Run {
     const std::vector<SurfacePatch> patches = ProxySurfacePatches(*result.proxy, options.patches);
     const std::vector<PatchesSeen> seen = SeenByEveryView(patches);
     std::vector<bool> keep(seen.size(), true);
-    if (options.remove_redundant) keep = KeepNonRedundant(seen, options.visibility);
+    if (options.remove_redundant) {
+      keep = KeepNonRedundant(seen, options.visibility, {}, options.prune_holds_failing_scores);
+    }
     PatchViewCounts counts;
     for (size_t v = 0; v < seen.size(); ++v) {
       result.views[v].kept = keep[v];

@@ -26,13 +26,14 @@ bool ScoresHold(const PatchViewCounts& counts, const std::vector<double>& floor,
 
 std::vector<bool> KeepNonRedundant(const std::vector<PatchesSeen>& seen,
                                    const VisibilityOptions& options,
-                                   const std::vector<bool>& protected_views) {
+                                   const std::vector<bool>& protected_views,
+                                   bool hold_failing_scores) {
   std::vector<bool> keep(seen.size(), true);
   if (seen.empty()) return keep;
   PatchViewCounts counts;
   for (const PatchesSeen& view : seen) AddView(view, &counts);
   std::vector<double> floor = PatchScores(counts, options);
-  for (double& score : floor) score = std::min(1.0, score);
+  for (double& score : floor) score = score >= 1.0 ? 1.0 : (hold_failing_scores ? score : 0.0);
 
   std::vector<bool> tried(seen.size(), false);
   while (true) {

@@ -1,5 +1,6 @@
 // Phase 3's redundant-view removal on hand-made visibility: views that only repeat what others
-// see go, least useful first, and no patch drops below min(1, its score with every view).
+// see go, least useful first, and every patch passing with all views still passes; a failing
+// patch holds its views only when asked to.
 
 #include "services/planner/redundant_views.h"
 
@@ -18,20 +19,39 @@ TEST(KeepNonRedundant, DropsRepeatsButKeepsEveryPatchAtItsScore) {
   EXPECT_EQ(keep, (std::vector<bool>{true, true, false, false}));
 }
 
-TEST(KeepNonRedundant, APatchBelowTheTargetKeepsEveryViewOfIt) {
+TEST(KeepNonRedundant, APatchBelowTheTargetHoldsItsViewsOnlyWhenAsked) {
   VisibilityOptions options;
   options.min_views = 3;
-  // Patch 1 is seen by views 1 and 2 only (score 2/3): both must stay; view 3 repeats patch 0,
-  // which has four views.
+  // Patch 0 has four views and passes with any three. Patch 1 is seen by views 1 and 2 only
+  // (score 2/3), which no choice of views makes pass.
   const std::vector<PatchesSeen> seen = {{1, 0}, {1, 1}, {1, 1}, {1, 0}};
+  // The paper's rule: only patch 0 counts, so exactly one of its four views goes (the least
+  // useful: each is one of four, none critical; ties go to the later capture).
   const std::vector<bool> keep = KeepNonRedundant(seen, options);
-  EXPECT_TRUE(keep[1]);
-  EXPECT_TRUE(keep[2]);
-  EXPECT_EQ(std::count(keep.begin(), keep.end(), false), 1);
+  EXPECT_EQ(keep, (std::vector<bool>{true, true, true, false}));
+  // Holding failing scores: views 1 and 2 must stay, and again one view of patch 0 goes.
+  const std::vector<bool> held = KeepNonRedundant(seen, options, {}, true);
+  EXPECT_TRUE(held[1]);
+  EXPECT_TRUE(held[2]);
+  EXPECT_EQ(std::count(held.begin(), held.end(), false), 1);
   // Protected views stay whatever they add.
   const std::vector<bool> all = KeepNonRedundant(seen, options, {true, true, true, true});
   EXPECT_EQ(std::count(all.begin(), all.end(), false), 0);
   EXPECT_TRUE(KeepNonRedundant({}, options).empty());
+}
+
+TEST(KeepNonRedundant, AFailingPatchDoesNotHoldViewsAPassingOneNeeds) {
+  VisibilityOptions options;
+  options.min_views = 2;
+  // Patch 0 passes with views 0 and 1; patch 1 is seen by view 2 alone (fails); view 3 repeats
+  // patch 0. Without holding, view 2 adds nothing that passes and goes, as does one of 0, 1, 3.
+  const std::vector<PatchesSeen> seen = {{1, 0}, {1, 0}, {0, 1}, {1, 0}};
+  const std::vector<bool> keep = KeepNonRedundant(seen, options);
+  EXPECT_FALSE(keep[2]);
+  EXPECT_EQ(std::count(keep.begin(), keep.end(), true), 2);
+  const std::vector<bool> held = KeepNonRedundant(seen, options, {}, true);
+  EXPECT_TRUE(held[2]);
+  EXPECT_EQ(std::count(held.begin(), held.end(), true), 3);
 }
 
 }  // namespace
