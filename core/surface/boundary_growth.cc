@@ -7,21 +7,6 @@
 #include "core/surface/mesh_topology.h"
 
 namespace avc::surface {
-namespace {
-
-// Area-weighted normals of the mesh's vertices (unnormalised sums of face cross products).
-std::vector<Eigen::Vector3d> VertexNormals(const geometry::Mesh& mesh) {
-  std::vector<Eigen::Vector3d> normals(mesh.vertices.size(), Eigen::Vector3d::Zero());
-  for (const Eigen::Vector3i& t : mesh.faces) {
-    const Eigen::Vector3d a = mesh.vertices[t[0]].cast<double>();
-    const Eigen::Vector3d n =
-        (mesh.vertices[t[1]].cast<double>() - a).cross(mesh.vertices[t[2]].cast<double>() - a);
-    for (int k = 0; k < 3; ++k) normals[t[k]] += n;
-  }
-  return normals;
-}
-
-}  // namespace
 
 double EstimateBoundaryBand(const std::vector<Cell>& cells, double spacing, double scale) {
   double area = 0.0;

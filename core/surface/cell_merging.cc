@@ -8,6 +8,7 @@
 #include <unordered_set>
 #include <utility>
 
+#include "core/cluster/connected_components.h"
 #include "core/cluster/point_grid.h"
 #include "core/surface/delaunay_2d.h"
 #include "core/surface/mesh_topology.h"
@@ -18,12 +19,15 @@ namespace {
 
 using CellPair = std::pair<int, int>;
 
-// For every pair of cells with boundary vertices within distance of each other: those
-// vertices, plus their neighbours along the boundary so the boundary edges at the ends of the
-// gap take part too. Sorted and unique per pair.
+// For every pair of cells with boundary vertices within their distance of each other (distance
+// between clusters, own_cluster_distance within one): those vertices, plus their neighbours
+// along the boundary so the boundary edges at the ends of the gap take part too. Sorted and
+// unique per pair.
 std::map<CellPair, std::vector<int>> NearBoundaryVertices(const geometry::Mesh& mesh,
                                                           const std::vector<int>& vertex_cell,
-                                                          double distance) {
+                                                          const std::vector<int32_t>& cell_labels,
+                                                          double distance,
+                                                          double own_cluster_distance) {
   std::vector<int> boundary;
   std::vector<Eigen::Vector3f> positions;
   const std::vector<bool> on_boundary = BoundaryVertices(mesh);
@@ -42,14 +46,17 @@ std::map<CellPair, std::vector<int>> NearBoundaryVertices(const geometry::Mesh& 
       if (i > 0 || loop.closed) along[loop.vertices[i]].push_back(loop.vertices[(i + n - 1) % n]);
     }
   }
-  const cluster::PointGrid grid(positions, static_cast<float>(distance));
+  const float reach = static_cast<float>(std::max(distance, own_cluster_distance));
+  const cluster::PointGrid grid(positions, reach);
   for (size_t i = 0; i < boundary.size(); ++i) {
     const int a = boundary[i];
-    grid.ForEachWithin(positions[i], static_cast<float>(distance), [&](uint32_t j) {
+    grid.ForEachWithin(positions[i], reach, [&](uint32_t j) {
       const int b = boundary[j];
       const int ca = vertex_cell[a];
       const int cb = vertex_cell[b];
       if (ca >= cb) return;  // each pair once, from its lower cell
+      const double limit = cell_labels[ca] == cell_labels[cb] ? own_cluster_distance : distance;
+      if ((positions[i] - positions[j]).squaredNorm() > limit * limit) return;
       std::vector<int>& list = near[{ca, cb}];
       for (int v : {a, b}) {
         list.push_back(v);
@@ -64,18 +71,42 @@ std::map<CellPair, std::vector<int>> NearBoundaryVertices(const geometry::Mesh& 
   return near;
 }
 
+double OwnClusterDistance(const StitchRule& rule) {
+  return rule.own_cluster_distance > 0.0 ? rule.own_cluster_distance : rule.distance;
+}
+
+// Unit vertex normals as floats, for the link test.
+std::vector<Eigen::Vector3f> UnitVertexNormals(const geometry::Mesh& mesh) {
+  std::vector<Eigen::Vector3f> unit;
+  unit.reserve(mesh.vertices.size());
+  for (const Eigen::Vector3d& n : VertexNormals(mesh)) {
+    const double length = n.norm();
+    unit.push_back(length > 0.0 ? Eigen::Vector3f((n / length).cast<float>())
+                                : Eigen::Vector3f::Zero());
+  }
+  return unit;
+}
+
 class GapStitcher {
  public:
   GapStitcher(geometry::Mesh& mesh, const std::vector<int>& vertex_cell,
-              const std::vector<int32_t>& cell_labels, double distance, double min_facing)
+              const std::vector<int32_t>& cell_labels, const StitchRule& rule)
       : mesh_(mesh),
         vertex_cell_(vertex_cell),
         cell_labels_(cell_labels),
-        distance2_(distance * distance),
-        min_facing_(min_facing) {
+        distance2_(rule.distance * rule.distance),
+        own_cluster_distance2_(OwnClusterDistance(rule) * OwnClusterDistance(rule)),
+        min_facing_(std::cos(rule.max_tilt_deg * std::numbers::pi / 180.0)),
+        normals_(rule.link_slope >= 0.0f ? UnitVertexNormals(mesh)
+                                         : std::vector<Eigen::Vector3f>{}) {
     for (const Eigen::Vector3i& t : mesh_.faces) {
       for (int k = 0; k < 3; ++k) half_edges_.insert(HalfEdgeKey(t[k], t[(k + 1) % 3]));
     }
+    link_.radius = static_cast<float>(rule.distance);
+    link_.normals = rule.link_slope >= 0.0f ? &normals_ : nullptr;
+    link_.slope = rule.link_slope;
+    link_.mean_slope = rule.link_mean_slope;
+    link_.allowance = rule.link_allowance;
   }
 
   // Triangulates the gap between the vertices (of two or more cells) seen along normal.
@@ -110,7 +141,7 @@ class GapStitcher {
       if (vertex_cell_[a] == vertex_cell_[b]) {
         // Within a cell only along a free boundary edge b -> a, so the face lies outside it.
         if (!half_edges_.count(HalfEdgeKey(b, a))) return false;
-      } else if ((mesh_.vertices[a] - mesh_.vertices[b]).squaredNorm() > distance2_) {
+      } else if (!Bridgeable(a, b)) {
         return false;
       }
     }
@@ -119,6 +150,16 @@ class GapStitcher {
                                   .cross(mesh_.vertices[face[2]].cast<double>() - p);
     const double length = n.norm();
     return length > 0.0 && n.dot(normal) >= min_facing_ * length;
+  }
+
+  // An edge between two cells: within the stitch distance for their clusters, and between
+  // clusters also on one local surface.
+  bool Bridgeable(int a, int b) const {
+    const bool one_cluster = cell_labels_[vertex_cell_[a]] == cell_labels_[vertex_cell_[b]];
+    const double limit2 = one_cluster ? own_cluster_distance2_ : distance2_;
+    if ((mesh_.vertices[a] - mesh_.vertices[b]).squaredNorm() > limit2) return false;
+    return one_cluster ||
+           link_.Linked(mesh_.vertices, static_cast<uint32_t>(a), static_cast<uint32_t>(b));
   }
 
   void Add(const Eigen::Vector3i& face) {
@@ -136,7 +177,10 @@ class GapStitcher {
   const std::vector<int>& vertex_cell_;
   const std::vector<int32_t>& cell_labels_;
   double distance2_;
+  double own_cluster_distance2_;
   double min_facing_;
+  std::vector<Eigen::Vector3f> normals_;  // per vertex, unit
+  cluster::LinkRule link_;
   std::unordered_set<uint64_t> half_edges_;  // membership only: order never matters
 };
 
@@ -155,13 +199,11 @@ geometry::Mesh JoinCells(const std::vector<Cell>& cells, std::vector<int>* verte
 
 StitchStats StitchCells(geometry::Mesh& mesh, const std::vector<int>& vertex_cell,
                         const std::vector<Eigen::Vector3d>& cell_normals,
-                        const std::vector<int32_t>& cell_labels, double stitch_distance,
-                        double max_tilt_deg) {
+                        const std::vector<int32_t>& cell_labels, const StitchRule& rule) {
   StitchStats stats;
   const std::map<CellPair, std::vector<int>> near =
-      NearBoundaryVertices(mesh, vertex_cell, stitch_distance);
-  const double min_facing = std::cos(max_tilt_deg * std::numbers::pi / 180.0);
-  GapStitcher stitcher(mesh, vertex_cell, cell_labels, stitch_distance, min_facing);
+      NearBoundaryVertices(mesh, vertex_cell, cell_labels, rule.distance, OwnClusterDistance(rule));
+  GapStitcher stitcher(mesh, vertex_cell, cell_labels, rule);
   for (const auto& [pair, vertices] : near) {
     ++stats.neighbour_pairs;
     const Eigen::Vector3d mean = cell_normals[pair.first] + cell_normals[pair.second];

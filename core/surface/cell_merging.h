@@ -7,7 +7,11 @@
 // kept when it lies in the gap: it spans at least two cells, each of its edges within one cell
 // is a free boundary edge of that cell on the far side, edges between cells are within the stitch
 // distance, it faces within max_tilt of the mean normal, and it keeps every edge manifold and
-// consistently oriented.
+// consistently oriented. The rule may ask more between cells of different clusters: that each
+// such edge joins two points of one local surface (the clusterer's link test on the vertices'
+// normals), so that leaves meeting at the base of a rosette, one a few millimetres above the
+// next, are left apart while the clusters the normal constraint cut out of one bent leaf are
+// joined again; and it may stitch the cells of one cluster across wider gaps.
 
 #include <Eigen/Core>
 #include <cstddef>
@@ -29,11 +33,21 @@ struct StitchStats {
   size_t faces = 0;            // triangles added
 };
 
+struct StitchRule {
+  double distance = 0;              // m: the widest gap bridged between cells of two clusters
+  double own_cluster_distance = 0;  // m: ... between cells of one cluster; <= 0: distance
+  double max_tilt_deg = 60;
+  // The link test (cluster::LinkRule) for edges between clusters; link_slope < 0 turns it off
+  // (SurfaceOptions::stitch_link_mean_slope, off by default in the surfacer).
+  float link_slope = 0.5f;
+  float link_mean_slope = 0.1f;
+  float link_allowance = 0;  // m
+};
+
 // mesh: joined cells (JoinCells); cell_normals and cell_labels per cell. New faces take the
 // label of the cell holding most of their vertices (the first vertex's on a tie).
 StitchStats StitchCells(geometry::Mesh& mesh, const std::vector<int>& vertex_cell,
                         const std::vector<Eigen::Vector3d>& cell_normals,
-                        const std::vector<int32_t>& cell_labels, double stitch_distance,
-                        double max_tilt_deg);
+                        const std::vector<int32_t>& cell_labels, const StitchRule& rule);
 
 }  // namespace avc::surface

@@ -142,6 +142,17 @@ std::vector<std::vector<int>> VertexNeighbours(const geometry::Mesh& mesh) {
   return neighbours;
 }
 
+std::vector<Eigen::Vector3d> VertexNormals(const geometry::Mesh& mesh) {
+  std::vector<Eigen::Vector3d> normals(mesh.vertices.size(), Eigen::Vector3d::Zero());
+  for (const Eigen::Vector3i& t : mesh.faces) {
+    const Eigen::Vector3d a = mesh.vertices[t[0]].cast<double>();
+    const Eigen::Vector3d n =
+        (mesh.vertices[t[1]].cast<double>() - a).cross(mesh.vertices[t[2]].cast<double>() - a);
+    for (int k = 0; k < 3; ++k) normals[t[k]] += n;
+  }
+  return normals;
+}
+
 std::vector<int> FaceComponents(const geometry::Mesh& mesh, int* count) {
   std::vector<int> parent(mesh.vertices.size());
   std::iota(parent.begin(), parent.end(), 0);

@@ -31,6 +31,9 @@ std::vector<bool> OuterLoops(const geometry::Mesh& mesh, const std::vector<Bound
 // Sorted, unique neighbours of each vertex along face edges.
 std::vector<std::vector<int>> VertexNeighbours(const geometry::Mesh& mesh);
 
+// Area-weighted normals of the mesh's vertices (unnormalised sums of face cross products).
+std::vector<Eigen::Vector3d> VertexNormals(const geometry::Mesh& mesh);
+
 // Component id per face (faces sharing a vertex are connected), numbered 0.. in order of each
 // component's first face; *count receives the number of components.
 std::vector<int> FaceComponents(const geometry::Mesh& mesh, int* count);

@@ -48,6 +48,14 @@ void SurfaceOptions::Validate() const {
   RequirePositive(long_edge_factor, "long_edge_factor");
   RequirePositive(hole_perimeter_factor, "hole_perimeter_factor");
   RequirePositive(stitch_factor, "stitch_factor");
+  if (!std::isfinite(own_cluster_stitch_factor)) {
+    throw std::invalid_argument(
+        "surface options: own_cluster_stitch_factor must be finite (<= 0: stitch_factor)");
+  }
+  if (!std::isfinite(stitch_link_mean_slope)) {
+    throw std::invalid_argument(
+        "surface options: stitch_link_mean_slope must be finite (< 0 turns the test off)");
+  }
   if (refine_subdivisions < 0 || refine_subdivisions > 3) {
     throw std::invalid_argument(fmt::format(
         "surface options: refine_subdivisions must be in [0, 3], got {}", refine_subdivisions));
@@ -101,6 +109,10 @@ SurfaceThresholds ResolveThresholds(const SurfaceOptions& options, double spacin
   t.long_edge = options.long_edge_factor * spacing;
   t.hole_perimeter = options.hole_perimeter_factor * spacing;
   t.stitch_distance = options.stitch_factor * spacing;
+  t.own_cluster_stitch_distance =
+      (options.own_cluster_stitch_factor > 0.0 ? options.own_cluster_stitch_factor
+                                               : options.stitch_factor) *
+      spacing;
   t.growth_clearance = options.growth_clearance_factor * spacing;
   return t;
 }

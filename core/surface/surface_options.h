@@ -76,9 +76,22 @@ struct SurfaceOptions {
   // 3 of 14 strap leaves in pieces that 3.5 joins; 5 joins nothing more but bridges the gaps
   // between neighbouring leaves (RMSE 0.34 -> 0.49 mm on the strap, 0.41 -> 0.66 on the rosette).
   double stitch_factor = 3.5;
+  // Cells of one cluster (pieces of one leaf that a narrow part, sampled by few points, leaves
+  // apart) are stitched across gaps up to this many spacings; <= 0: stitch_factor.
+  double own_cluster_stitch_factor = 0;
   // A stitch triangle must face within this angle (degrees) of the two cells' mean normal: no
   // walls between stacked leaves.
   double max_stitch_tilt_deg = 60.0;
+  // When >= 0, a stitch edge between cells of different clusters must join two points of one
+  // local surface: its offset within 0.5 |d| of both vertices' tangent planes and within this
+  // many |d| of the plane normal to the bisector of their normals, plus 3 noise (the clusterer's
+  // link test, cluster/connected_components.h). Off by default. Measured with 0.1 and
+  // own_cluster_stitch_factor 5.25 (`avc bench surface`, 2026-12-03): the rosette's leaves in
+  // one piece 9 -> 16 of 18 with leaf clusters (7 -> 9 with Algorithm 2), its RMSE 0.457 ->
+  // 0.353 mm, but its area with Algorithm 2 0.928 -> 0.894, and on the simulated scans
+  // (`--scans`) 1-2 points less leaf area (strap 0.862 -> 0.844) at the same precision: the
+  // test also refuses bridges within one leaf where real points' cells meet.
+  double stitch_link_mean_slope = -1;
   SmoothingOptions final_smoothing{2, 0.5, -0.53};
   // Connected pieces of fewer faces than this are dropped at the end (stray fragments).
   int min_component_faces = 3;
@@ -96,6 +109,7 @@ struct SurfaceThresholds {
   double long_edge = 0;
   double hole_perimeter = 0;
   double stitch_distance = 0;
+  double own_cluster_stitch_distance = 0;
   double growth_clearance = 0;
   double growth_band = 0;  // measured after Phase 1 (boundary_growth.h), 0 when not growing
 };

@@ -169,6 +169,9 @@ size_t RemoveSmallComponents(geometry::Mesh& mesh, int min_faces) {
   return removed;
 }
 
+// The link test's allowance for the points' noise across the surface, as the pieces' (3 noise).
+constexpr double kStitchLinkNoiseAllowance = 3.0;
+
 // Phase 4: cells stitched into one mesh, junction holes filled, final smoothing.
 geometry::Mesh MergeCells(const std::vector<Cell>& cells, const SurfaceOptions& options,
                           const SurfaceThresholds& thresholds, SurfaceReport* report) {
@@ -180,8 +183,17 @@ geometry::Mesh MergeCells(const std::vector<Cell>& cells, const SurfaceOptions& 
     normals.push_back(cell.plane.normal);
     labels.push_back(cell.cluster);
   }
-  report->stitching = StitchCells(mesh, vertex_cell, normals, labels, thresholds.stitch_distance,
-                                  options.max_stitch_tilt_deg);
+  StitchRule rule;
+  rule.distance = thresholds.stitch_distance;
+  rule.own_cluster_distance = thresholds.own_cluster_stitch_distance;
+  rule.max_tilt_deg = options.max_stitch_tilt_deg;
+  if (options.stitch_link_mean_slope >= 0.0) {
+    rule.link_mean_slope = static_cast<float>(options.stitch_link_mean_slope);
+    rule.link_allowance = static_cast<float>(kStitchLinkNoiseAllowance * thresholds.noise);
+  } else {
+    rule.link_slope = -1.0f;
+  }
+  report->stitching = StitchCells(mesh, vertex_cell, normals, labels, rule);
   report->area_stitched = geometry::SurfaceArea(mesh);
   report->merged_holes_filled = FillSmallHoles(mesh, thresholds.hole_perimeter);
   SmoothSheet(mesh, options.final_smoothing);

@@ -41,6 +41,13 @@ geometry::Mesh Grid(int n, float h = 1.0f) {
   return mesh;
 }
 
+// Phase 4's rule with this stitch distance and the defaults otherwise.
+StitchRule Rule(double distance) {
+  StitchRule rule;
+  rule.distance = distance;
+  return rule;
+}
+
 // Removes the two faces of each grid square (i, j) listed.
 void Punch(geometry::Mesh& mesh, int n, const std::vector<std::pair<int, int>>& squares) {
   std::vector<bool> keep(mesh.faces.size(), true);
@@ -200,7 +207,7 @@ TEST(CellMerging, GapBetweenTwoHalvesIsTriangulated) {
   std::vector<int> vertex_cell;
   geometry::Mesh mesh = JoinCells({lower, upper}, &vertex_cell);
   const StitchStats stats = StitchCells(
-      mesh, vertex_cell, {Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitZ()}, {0, 1}, 1.6, 60.0);
+      mesh, vertex_cell, {Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitZ()}, {0, 1}, Rule(1.6));
   EXPECT_EQ(stats.neighbour_pairs, 1u);
   EXPECT_EQ(stats.faces, 20u);
   EXPECT_NEAR(geometry::SurfaceArea(mesh), 110.0, 1e-6);
@@ -219,8 +226,53 @@ TEST(CellMerging, StackedSheetsAreNotWalledTogether) {
   std::vector<int> vertex_cell;
   geometry::Mesh mesh = JoinCells({lower, upper}, &vertex_cell);
   const StitchStats stats = StitchCells(
-      mesh, vertex_cell, {Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitZ()}, {0, 1}, 1.6, 60.0);
+      mesh, vertex_cell, {Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitZ()}, {0, 1}, Rule(1.6));
   EXPECT_EQ(stats.faces, 0u);
+}
+
+// Two flat strips 1 apart along y, the second `rise` higher (a step, like one leaf's base
+// lying above the next leaf's at a rosette's centre): stitched faces between them.
+size_t StitchedAcrossStep(float rise, int32_t upper_label, const StitchRule& rule) {
+  Cell lower;
+  lower.mesh = Grid(6);
+  std::vector<bool> keep(lower.mesh.faces.size());
+  for (size_t f = 0; f < keep.size(); ++f) keep[f] = f < 24;  // rows 0-1
+  KeepFaces(lower.mesh, keep);
+  RemoveUnusedVertices(lower.mesh);
+  Cell upper = lower;
+  upper.cluster = upper_label;
+  for (Eigen::Vector3f& v : upper.mesh.vertices) v += Eigen::Vector3f(0.0f, 3.0f, rise);
+  upper.mesh.face_labels.assign(upper.mesh.faces.size(), upper_label);
+  std::vector<int> vertex_cell;
+  geometry::Mesh mesh = JoinCells({lower, upper}, &vertex_cell);
+  return StitchCells(mesh, vertex_cell, {Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitZ()},
+                     {0, upper_label}, rule)
+      .faces;
+}
+
+TEST(CellMerging, ClustersAreJoinedOnlyWhereTheyContinueOneSurface) {
+  // Level: one surface whatever the clusters (six squares of gap, two faces each).
+  EXPECT_EQ(StitchedAcrossStep(0.0f, 1, Rule(1.8)), 12u);
+  // A step of 0.8 over the gap of 1: within the 60 degree tilt, but the gap's edges rise 39
+  // degrees off both strips' planes: not one surface, so two clusters stay apart...
+  EXPECT_EQ(StitchedAcrossStep(0.8f, 1, Rule(1.8)), 0u);
+  // ...unless the link test is off, or both strips are one cluster.
+  StitchRule no_link = Rule(1.8);
+  no_link.link_slope = -1.0f;
+  EXPECT_EQ(StitchedAcrossStep(0.8f, 1, no_link), 12u);
+  EXPECT_EQ(StitchedAcrossStep(0.8f, 0, Rule(1.8)), 12u);
+}
+
+TEST(CellMerging, OneClusterIsStitchedAcrossWiderGaps) {
+  // A level gap of 1 (1.41 along the diagonals) with the stitch distance 0.9: too wide between
+  // clusters; within one cluster too while its own distance is unset (the same 0.9), bridged
+  // once it is 1.5.
+  StitchRule rule = Rule(0.9);
+  EXPECT_EQ(StitchedAcrossStep(0.0f, 1, rule), 0u);
+  EXPECT_EQ(StitchedAcrossStep(0.0f, 0, rule), 0u);
+  rule.own_cluster_distance = 1.5;
+  EXPECT_EQ(StitchedAcrossStep(0.0f, 1, rule), 0u);
+  EXPECT_EQ(StitchedAcrossStep(0.0f, 0, rule), 12u);
 }
 
 }  // namespace

@@ -285,6 +285,12 @@ TEST(SurfaceReconstructionInput, InvalidOptionsAreRefusedNamingTheField) {
   options = SurfaceOptions{};
   options.cell_smoothing.mu = 0.2;
   EXPECT_THROW(options.Validate(), std::invalid_argument);
+  options = SurfaceOptions{};
+  options.stitch_link_mean_slope = std::nan("");
+  EXPECT_THROW(options.Validate(), std::invalid_argument);
+  options = SurfaceOptions{};
+  options.own_cluster_stitch_factor = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(options.Validate(), std::invalid_argument);
 }
 
 TEST(SurfaceReconstructionInput, GivenSpacingOverridesTheMeasuredOne) {
@@ -293,6 +299,10 @@ TEST(SurfaceReconstructionInput, GivenSpacingOverridesTheMeasuredOne) {
   const SurfaceResult result = ReconstructSurface(test::SpiralDisc(kRadius, 1000), options);
   EXPECT_DOUBLE_EQ(result.report.thresholds.spacing, 0.002);
   EXPECT_DOUBLE_EQ(result.report.thresholds.alpha, 0.008);
+  // One cluster's cells are stitched as far as any two (3.5 spacings) unless told otherwise.
+  EXPECT_DOUBLE_EQ(result.report.thresholds.own_cluster_stitch_distance, 0.007);
+  options.own_cluster_stitch_factor = 5.0;
+  EXPECT_DOUBLE_EQ(ResolveThresholds(options, 0.002, 0.0).own_cluster_stitch_distance, 0.01);
 }
 
 }  // namespace

@@ -55,7 +55,20 @@ void RegisterSurfacer(CLI::App& root, int* exit_code) {
   command->add_option("--alpha-factor", surface.alpha_factor, "Phase 1 alpha in spacings")
       ->capture_default_str();
   command
-      ->add_option("--stitch-factor", surface.stitch_factor, "Phase 4 stitch distance in spacings")
+      ->add_option("--stitch-factor", surface.stitch_factor,
+                   "Phase 4 stitch distance in spacings between cells of different clusters")
+      ->capture_default_str();
+  command
+      ->add_option("--own-cluster-stitch-factor", surface.own_cluster_stitch_factor,
+                   "Phase 4 stitch distance in spacings between cells of one cluster (0: the "
+                   "--stitch-factor)")
+      ->capture_default_str();
+  command
+      ->add_option("--stitch-link-mean-slope", surface.stitch_link_mean_slope,
+                   "stitch cells of different clusters only where they continue one surface: "
+                   "largest offset along the bisector of the normals per unit length (negative: "
+                   "off; 0.1 with --own-cluster-stitch-factor 5.25 joins a rosette's leaves "
+                   "better, see BENCHMARKS.md)")
       ->capture_default_str();
   command
       ->add_option("--refine-subdivisions", surface.refine_subdivisions,
