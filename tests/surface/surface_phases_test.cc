@@ -192,22 +192,35 @@ TEST(BoundaryGrowth, EvenGridGrowsByHalfAPitch) {
   EXPECT_EQ(GrowOuterBoundary(held, 0.5, [](int) { return false; }).vertices, 0u);
 }
 
-TEST(CellMerging, GapBetweenTwoHalvesIsTriangulated) {
-  // Two 10 x 5 grids one pitch apart: the gap strip is 10 x 1.
+// Two cells: the first `rows` rows of an n x n grid, and a copy moved by `offset` in cluster
+// `upper_label`, joined into one mesh.
+struct TwoCells {
+  geometry::Mesh mesh;
+  std::vector<int> vertex_cell;
+};
+TwoCells JoinedStrips(int n, int rows, const Eigen::Vector3f& offset, int32_t upper_label) {
   Cell lower;
-  lower.mesh = Grid(10);
+  lower.mesh = Grid(n);
   std::vector<bool> keep(lower.mesh.faces.size());
-  for (size_t f = 0; f < keep.size(); ++f) keep[f] = f < 100;  // rows 0-4
+  for (size_t f = 0; f < keep.size(); ++f) keep[f] = f < static_cast<size_t>(2 * n * rows);
   KeepFaces(lower.mesh, keep);
   RemoveUnusedVertices(lower.mesh);
   Cell upper = lower;
-  upper.cluster = 1;
-  for (Eigen::Vector3f& v : upper.mesh.vertices) v.y() += 6.0f;
-  upper.mesh.face_labels.assign(upper.mesh.faces.size(), 1);
-  std::vector<int> vertex_cell;
-  geometry::Mesh mesh = JoinCells({lower, upper}, &vertex_cell);
-  const StitchStats stats = StitchCells(
-      mesh, vertex_cell, {Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitZ()}, {0, 1}, Rule(1.6));
+  upper.cluster = upper_label;
+  for (Eigen::Vector3f& v : upper.mesh.vertices) v += offset;
+  upper.mesh.face_labels.assign(upper.mesh.faces.size(), upper_label);
+  TwoCells joined;
+  joined.mesh = JoinCells({lower, upper}, &joined.vertex_cell);
+  return joined;
+}
+
+TEST(CellMerging, GapBetweenTwoHalvesIsTriangulated) {
+  // Two 10 x 5 grids one pitch apart: the gap strip is 10 x 1.
+  TwoCells cells = JoinedStrips(10, 5, Eigen::Vector3f(0.0f, 6.0f, 0.0f), 1);
+  geometry::Mesh& mesh = cells.mesh;
+  const StitchStats stats =
+      StitchCells(mesh, cells.vertex_cell, {Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitZ()},
+                  {0, 1}, Rule(1.6));
   EXPECT_EQ(stats.neighbour_pairs, 1u);
   EXPECT_EQ(stats.faces, 20u);
   EXPECT_NEAR(geometry::SurfaceArea(mesh), 110.0, 1e-6);
@@ -233,20 +246,9 @@ TEST(CellMerging, StackedSheetsAreNotWalledTogether) {
 // Two flat strips 1 apart along y, the second `rise` higher (a step, like one leaf's base
 // lying above the next leaf's at a rosette's centre): stitched faces between them.
 size_t StitchedAcrossStep(float rise, int32_t upper_label, const StitchRule& rule) {
-  Cell lower;
-  lower.mesh = Grid(6);
-  std::vector<bool> keep(lower.mesh.faces.size());
-  for (size_t f = 0; f < keep.size(); ++f) keep[f] = f < 24;  // rows 0-1
-  KeepFaces(lower.mesh, keep);
-  RemoveUnusedVertices(lower.mesh);
-  Cell upper = lower;
-  upper.cluster = upper_label;
-  for (Eigen::Vector3f& v : upper.mesh.vertices) v += Eigen::Vector3f(0.0f, 3.0f, rise);
-  upper.mesh.face_labels.assign(upper.mesh.faces.size(), upper_label);
-  std::vector<int> vertex_cell;
-  geometry::Mesh mesh = JoinCells({lower, upper}, &vertex_cell);
-  return StitchCells(mesh, vertex_cell, {Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitZ()},
-                     {0, upper_label}, rule)
+  TwoCells cells = JoinedStrips(6, 2, Eigen::Vector3f(0.0f, 3.0f, rise), upper_label);
+  return StitchCells(cells.mesh, cells.vertex_cell,
+                     {Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitZ()}, {0, upper_label}, rule)
       .faces;
 }
 
