@@ -18,18 +18,25 @@ ImageEvidence::ImageEvidence(const SurfaceImages& images, const ImageGrowthOptio
           "image growth: the mask of view '{}' is not an 8-bit single-channel {}x{} image",
           view.name, k.width, k.height));
     }
+    if (!view.image.empty() &&
+        (view.image.type() != CV_8UC3 || view.image.size() != view.mask.size())) {
+      throw std::invalid_argument(
+          fmt::format("image growth: the image of view '{}' is not an 8-bit colour {}x{} image",
+                      view.name, k.width, k.height));
+    }
     // For each background pixel, its distance to the nearest plant pixel.
     cv::Mat distance;
     cv::distanceTransform(view.mask == 0, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE);
     cv::Mat says(view.mask.size(), CV_8UC1, cv::Scalar(kNearEdge));
     says.setTo(kClearBackground, distance > options.edge_tolerance_px);
     says.setTo(kPlant, view.mask != 0);
-    views_.push_back({view.camera, std::move(says)});
+    views_.push_back({view.camera, std::move(says), view.image});
   }
 }
 
-NodeVerdict ImageEvidence::Judge(const Eigen::Vector3d& point) const {
+NodeVerdict ImageEvidence::Judge(const Eigen::Vector3d& point, const ColourModel* colour) const {
   int plant = 0;
+  int agreeing = 0;
   int background = 0;
   for (const PreparedView& view : views_) {
     const std::optional<Eigen::Vector2d> pixel = view.camera.Project(point);
@@ -37,14 +44,22 @@ NodeVerdict ImageEvidence::Judge(const Eigen::Vector3d& point) const {
     const double x = std::round(pixel->x());
     const double y = std::round(pixel->y());
     if (!(x >= 0.0 && y >= 0.0 && x < view.says.cols && y < view.says.rows)) continue;
-    const uint8_t says = view.says.at<uint8_t>(static_cast<int>(y), static_cast<int>(x));
+    const int row = static_cast<int>(y);
+    const int column = static_cast<int>(x);
+    const uint8_t says = view.says.at<uint8_t>(row, column);
     if (says == kPlant) {
       ++plant;
+      if (colour == nullptr || view.image.empty() ||
+          colour->Agrees(view.image.at<cv::Vec3b>(row, column))) {
+        ++agreeing;
+      }
     } else if (says == kClearBackground && ++background >= min_background_views_) {
       return NodeVerdict::kBackground;
     }
   }
-  return plant >= min_plant_views_ ? NodeVerdict::kPlant : NodeVerdict::kUnknown;
+  if (plant < min_plant_views_) return NodeVerdict::kUnknown;
+  return agreeing >= min_plant_views_ && 2 * agreeing >= plant ? NodeVerdict::kPlant
+                                                               : NodeVerdict::kOtherColour;
 }
 
 }  // namespace avc::surface

@@ -6,7 +6,8 @@
 // a point in the air beside a leaf projects onto background in the views that look past the
 // leaf's edge. So background in a couple of views rules a node out (the visual hull, at the
 // masks' full resolution), and plant in several views with no such veto lets the level set
-// grow there.
+// grow there, when the colours those views show agree with the growing cell's colour model
+// (colour_model.h): a leaf does not grow over a plant part of another colour behind its edge.
 
 #include <Eigen/Core>
 #include <cstdint>
@@ -15,6 +16,7 @@
 #include <vector>
 
 #include "core/camera/pinhole_camera.h"
+#include "core/surface/colour_model.h"
 #include "core/surface/image_growth_options.h"
 
 namespace avc::surface {
@@ -23,24 +25,27 @@ struct EvidenceView {
   std::string name;       // for messages
   camera::Camera camera;  // the camera the mask was made in (world -> camera)
   cv::Mat mask;           // CV_8UC1 of the camera's image size: 255 plant, 0 background
+  cv::Mat image;          // optional: CV_8UC3 (BGR) of the same size, for colour agreement
 };
 
 struct SurfaceImages {
   std::vector<EvidenceView> views;
 };
 
-enum class NodeVerdict { kPlant, kBackground, kUnknown };
+enum class NodeVerdict { kPlant, kBackground, kUnknown, kOtherColour };
 
 class ImageEvidence {
  public:
   // Throws std::invalid_argument naming the view whose mask is not CV_8UC1 of its camera's
-  // size.
+  // size, or whose image is neither empty nor CV_8UC3 of that size.
   ImageEvidence(const SurfaceImages& images, const ImageGrowthOptions& options);
 
   // kBackground when at least min_background_views views see background clearly at the
-  // point's projection, else kPlant when at least min_plant_views see plant, else kUnknown
-  // (too few views have it in frame).
-  NodeVerdict Judge(const Eigen::Vector3d& point) const;
+  // point's projection; else, when at least min_plant_views see plant: kPlant if `colour` is
+  // null or at least min_plant_views of them, and at least half, show a colour it agrees with
+  // (views without an image count as agreeing), kOtherColour if not; else kUnknown (too few
+  // views have it in frame).
+  NodeVerdict Judge(const Eigen::Vector3d& point, const ColourModel* colour = nullptr) const;
 
   size_t views() const { return views_.size(); }
 
@@ -49,7 +54,8 @@ class ImageEvidence {
   static constexpr uint8_t kClearBackground = 0, kNearEdge = 128, kPlant = 255;
   struct PreparedView {
     camera::Camera camera;
-    cv::Mat says;  // CV_8UC1 of kClearBackground, kNearEdge or kPlant
+    cv::Mat says;   // CV_8UC1 of kClearBackground, kNearEdge or kPlant
+    cv::Mat image;  // CV_8UC3 or empty (shared with the caller's view)
   };
   std::vector<PreparedView> views_;
   int min_plant_views_;

@@ -21,6 +21,7 @@ ImageGrowthStats& ImageGrowthStats::operator+=(const ImageGrowthStats& other) {
   nodes_plant += other.nodes_plant;
   nodes_background += other.nodes_background;
   nodes_unknown += other.nodes_unknown;
+  nodes_other_colour += other.nodes_other_colour;
   nodes_claimed += other.nodes_claimed;
   nodes_grown += other.nodes_grown;
   vertices_added += other.vertices_added;
@@ -29,6 +30,16 @@ ImageGrowthStats& ImageGrowthStats::operator+=(const ImageGrowthStats& other) {
 
 namespace {
 
+// The colour model of the cell's own points (vertices from samples), when they have colours.
+std::optional<ColourModel> CellColourModel(const Cell& cell, const ColourModelOptions& options) {
+  if (cell.mesh.colors.size() != cell.mesh.vertices.size()) return std::nullopt;
+  std::vector<Eigen::Matrix<uint8_t, 3, 1>> colours;
+  for (size_t v = 0; v < cell.source_points.size() && v < cell.mesh.colors.size(); ++v) {
+    if (cell.source_points[v] >= 0) colours.push_back(cell.mesh.colors[v]);
+  }
+  return ColourModel::Fit(colours, options);
+}
+
 // Keeps a grid of a few million nodes at most (a 2000 x 2000 grid is 30 MB of node state).
 constexpr size_t kMaxGridNodes = 4'000'000;
 
@@ -36,10 +47,12 @@ constexpr size_t kMaxGridNodes = 4'000'000;
 class NodeJudge {
  public:
   NodeJudge(const PlaneGrid& grid, const FittedSurface& fit, const ImageEvidence& evidence,
-            const ClaimedElsewhere& claimed_elsewhere, ImageGrowthStats* stats)
+            const ColourModel* colour, const ClaimedElsewhere& claimed_elsewhere,
+            ImageGrowthStats* stats)
       : grid_(grid),
         fit_(fit),
         evidence_(evidence),
+        colour_(colour),
         claimed_elsewhere_(claimed_elsewhere),
         stats_(stats),
         verdict_(grid.size(), kUnjudged),
@@ -63,7 +76,7 @@ class NodeJudge {
       ++stats_->nodes_claimed;
       return;
     }
-    switch (evidence_.Judge(lifted_[node])) {
+    switch (evidence_.Judge(lifted_[node], colour_)) {
       case NodeVerdict::kPlant:
         ++stats_->nodes_plant;
         verdict_[node] = kPass;
@@ -74,12 +87,16 @@ class NodeJudge {
       case NodeVerdict::kUnknown:
         ++stats_->nodes_unknown;
         return;
+      case NodeVerdict::kOtherColour:
+        ++stats_->nodes_other_colour;
+        return;
     }
   }
 
   const PlaneGrid& grid_;
   const FittedSurface& fit_;
   const ImageEvidence& evidence_;
+  const ColourModel* colour_;  // null: the masks alone
   const ClaimedElsewhere& claimed_elsewhere_;
   ImageGrowthStats* stats_;
   std::vector<uint8_t> verdict_;
@@ -216,7 +233,9 @@ ImageGrowthStats GrowCellWithImages(Cell& cell, const std::vector<Eigen::Vector3
   FittedSurfaceOptions growth_fit = fit;
   growth_fit.max_radius_factor = std::max(fit.max_radius_factor, options.max_growth_factor);
   const FittedSurface surface(std::move(own_samples), cell.plane.normal, spacing, growth_fit);
-  NodeJudge judge(grid, surface, evidence, claimed_elsewhere, &stats);
+  const std::optional<ColourModel> colour =
+      options.colour_agreement ? CellColourModel(cell, options.colour) : std::nullopt;
+  NodeJudge judge(grid, surface, evidence, colour ? &*colour : nullptr, claimed_elsewhere, &stats);
   const std::vector<uint8_t> grown = SmoothGrownRegion(
       grid, PropagateFront(grid, reach, judge), options.smoothing_factor * spacing / grid.pitch());
   stats.nodes_grown = static_cast<size_t>(std::count(grown.begin(), grown.end(), 1));

@@ -4,12 +4,14 @@
 // on a grid over the cell's plane, with a speed the images give node by node. A node is lifted
 // onto the cell's surface (the mesh's height carried outwards, then the fitted surface of the
 // cell's samples, fitted_surface.h) and judged by the plant masks (image_evidence.h): the front
-// moves at unit speed through nodes the views see as plant and stops at nodes they see as
-// background, at nodes nearer another cell's points (the neighbouring cells, which Phase 4
-// stitches to), and after max_growth. The front's arrival times are the monotone level set;
-// one Merriman-Bence-Osher step (Gaussian, threshold one half) is its curvature term. The grown
-// region is then triangulated with the cell's own vertices (2-D Delaunay on the plane, alpha
-// as in Phase 1), so the cell keeps every vertex and gains new ones (source_points -1).
+// moves at unit speed through nodes the views see as plant, in colours that agree with the
+// cell's colour model (colour_model.h, fitted to its points' colours), and stops at nodes they
+// see as background or in another colour, at nodes nearer another cell's points (the neighbouring
+// cells, which Phase 4 stitches to), and after max_growth. The front's arrival times are the
+// monotone level set; one Merriman-Bence-Osher step (Gaussian, threshold one half) is its curvature
+// term. The grown region is then triangulated with the cell's own vertices (2-D Delaunay on the
+// plane, alpha as in Phase 1), so the cell keeps every vertex and gains new ones (source_points
+// -1).
 
 #include <Eigen/Core>
 #include <cstddef>
@@ -24,12 +26,13 @@
 namespace avc::surface {
 
 struct ImageGrowthStats {
-  size_t cells_grown = 0;       // cells that gained area
-  size_t nodes_plant = 0;       // judged nodes the views see as plant
-  size_t nodes_background = 0;  // ... as background (the front stops)
-  size_t nodes_unknown = 0;     // ... in too few views' frames (the front stops)
-  size_t nodes_claimed = 0;     // nearer another cell (the front stops)
-  size_t nodes_grown = 0;       // in the grown region after the curvature step
+  size_t cells_grown = 0;         // cells that gained area
+  size_t nodes_plant = 0;         // judged nodes the views see as plant
+  size_t nodes_background = 0;    // ... as background (the front stops)
+  size_t nodes_unknown = 0;       // ... in too few views' frames (the front stops)
+  size_t nodes_other_colour = 0;  // ... as plant of another colour than the cell's (stops)
+  size_t nodes_claimed = 0;       // nearer another cell (the front stops)
+  size_t nodes_grown = 0;         // in the grown region after the curvature step
   size_t vertices_added = 0;
 
   ImageGrowthStats& operator+=(const ImageGrowthStats& other);

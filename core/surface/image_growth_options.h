@@ -4,6 +4,8 @@
 // plane is gridded, and what the plant masks must say for a grid node to count as leaf.
 // Distances are multiples of the point spacing, like every other surfacer threshold.
 
+#include "core/surface/colour_model.h"
+
 namespace avc::surface {
 
 struct ImageGrowthOptions {
@@ -30,6 +32,10 @@ struct ImageGrowthOptions {
   // spacings and thresholded at one half (one Merriman-Bence-Osher step of curvature flow),
   // which removes spurs along mask noise without moving a straight outline.
   double smoothing_factor = 1.0;
+  // Colour agreement: with the views' images, a node also needs the colours most of its plant
+  // views show to agree with the cell's colour model (colour_model.h); false: the masks alone.
+  bool colour_agreement = true;
+  ColourModelOptions colour;
 };
 
 }  // namespace avc::surface

@@ -8,6 +8,27 @@
 #include "core/camera/camera_io.h"
 
 namespace avc::surface {
+namespace {
+
+// folder/images/<stem>.jpg, the undistorted colour image the builder writes beside the mask;
+// empty when there is none. Throws std::runtime_error naming the file when it cannot be read or
+// its size is not its camera's.
+cv::Mat ReadColourImage(const std::filesystem::path& folder, const camera::NamedCamera& named) {
+  std::filesystem::path file = folder / "images" / std::filesystem::path(named.name).filename();
+  file.replace_extension(".jpg");
+  if (!std::filesystem::is_regular_file(file)) return {};
+  cv::Mat image = cv::imread(file.string(), cv::IMREAD_COLOR);
+  if (image.empty())
+    throw std::runtime_error(fmt::format("{}: not a readable image", file.string()));
+  const camera::Intrinsics& k = named.camera.intrinsics;
+  if (image.cols != k.width || image.rows != k.height) {
+    throw std::runtime_error(fmt::format("{}: {}x{} pixels, but its camera is {}x{}", file.string(),
+                                         image.cols, image.rows, k.width, k.height));
+  }
+  return image;
+}
+
+}  // namespace
 
 SurfaceImages ReadSurfaceImages(const std::filesystem::path& folder) {
   SurfaceImages images;
@@ -30,7 +51,8 @@ SurfaceImages ReadSurfaceImages(const std::filesystem::path& folder) {
                                            mask_file.string(), mask.cols, mask.rows,
                                            cameras_file.string(), k.width, k.height));
     }
-    images.views.push_back({named.name, named.camera, std::move(mask)});
+    images.views.push_back(
+        {named.name, named.camera, std::move(mask), ReadColourImage(folder, named)});
   }
   return images;
 }
@@ -38,7 +60,9 @@ SurfaceImages ReadSurfaceImages(const std::filesystem::path& folder) {
 SurfaceImages SurfaceImagesOf(const dataset::ViewSet& set) {
   SurfaceImages images;
   for (const dataset::View& view : set.views) {
-    if (!view.mask.empty()) images.views.push_back({view.name, view.camera, view.mask});
+    if (!view.mask.empty()) {
+      images.views.push_back({view.name, view.camera, view.mask, view.image});
+    }
   }
   return images;
 }

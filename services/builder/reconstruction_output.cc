@@ -27,6 +27,9 @@ fs::path ChooseOutputDirectory(const fs::path& dataset_dir, const fs::path& requ
   return candidate;
 }
 
+// JPEG quality of the undistorted images: their colours, not their fine detail, are read back.
+constexpr int kImageQuality = 95;
+
 std::vector<std::string> WriteReconstruction(const fs::path& dir, const dataset::ViewSet& set,
                                              const Reconstruction& reconstruction,
                                              const BuildReport& report, bool overwrite) {
@@ -40,6 +43,7 @@ std::vector<std::string> WriteReconstruction(const fs::path& dir, const dataset:
     }
   }
   fs::create_directories(dir / "masks");
+  fs::create_directories(dir / "images");
   std::vector<std::string> written;
   reconstruction.proxy.WriteBinary(dir / "ppr.bt");
   written.push_back("ppr.bt");
@@ -59,6 +63,16 @@ std::vector<std::string> WriteReconstruction(const fs::path& dir, const dataset:
       throw std::runtime_error("cannot write " + (dir / "masks" / mask_name).string());
     }
     written.push_back("masks/" + mask_name.string());
+    // The undistorted image beside its mask: the surfacer's colour agreement reads it.
+    if (!view.mask.empty() && !view.image.empty()) {
+      fs::path image_name = mask_name;
+      image_name.replace_extension(".jpg");
+      if (!cv::imwrite((dir / "images" / image_name).string(), view.image,
+                       {cv::IMWRITE_JPEG_QUALITY, kImageQuality})) {
+        throw std::runtime_error("cannot write " + (dir / "images" / image_name).string());
+      }
+      written.push_back("images/" + image_name.string());
+    }
     cameras.push_back({view.name, view.camera});
   }
   camera::WriteCamerasJson(dir / "cameras.json", cameras);

@@ -2,7 +2,8 @@
 
 // A reconstruction on disk, with a scan directory's file names: ppr.bt (the plant proxy, for
 // octovis), points.ply (MVS points with confidence and view indices), masks/<image>.png (the
-// masks used), cameras.json (the cameras as used, distortion removed) and build.json (the run's
+// masks used), images/<image>.jpg (the undistorted images, for the surfacer's colour
+// agreement), cameras.json (the cameras as used, distortion removed) and build.json (the run's
 // report). Later stages add merged.ply, clusters.ply, mesh.ply and traits.csv beside them.
 
 #include <filesystem>

@@ -9,6 +9,7 @@
 #include <csignal>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
 
 #include "core/dataset/dataset_reader.h"
 #include "core/launch/child_process.h"
@@ -138,8 +139,11 @@ TEST(ReconstructionOutput, ChoosesAFreshFolderAndNeverOverwritesByAccident) {
   EXPECT_FALSE(report.accuracy.has_value());
   const auto files = WriteReconstruction(dir / "out", set, result, report, false);
   EXPECT_EQ(files.front(), "ppr.bt");
-  EXPECT_EQ(files.size(), 1u + 4u + 2u);  // ppr.bt, 4 masks, cameras.json, build.json
+  // ppr.bt, 4 masks, 4 undistorted images, cameras.json, build.json
+  EXPECT_EQ(files.size(), 1u + 4u + 4u + 2u);
   EXPECT_TRUE(fs::exists(dir / "out" / "masks" / "view_0000.png"));
+  const cv::Mat image = cv::imread((dir / "out" / "images" / "view_0000.jpg").string());
+  EXPECT_EQ(image.size(), set.views[0].image.size());
   EXPECT_THROW(WriteReconstruction(dir / "out", set, result, report, false), std::runtime_error);
   EXPECT_NO_THROW(WriteReconstruction(dir / "out", set, result, report, true));
 }

@@ -34,6 +34,18 @@ inline cv::Mat DiscMask(const camera::Camera& camera, double radius, double heig
   return mask;
 }
 
+// The colours of the disc's plane seen by a camera: `inner` within radius of the z axis,
+// `outer` beyond it (BGR).
+inline cv::Mat TwoColourPlane(const camera::Camera& camera, double radius, const cv::Vec3b& inner,
+                              const cv::Vec3b& outer, double height = 0.0) {
+  const camera::Intrinsics& k = camera.intrinsics;
+  cv::Mat image(k.height, k.width, CV_8UC3, cv::Scalar(128, 128, 128));
+  eval::test::ForEachPlaneHit(camera, height, [&](int row, int column, const Eigen::Vector3d& hit) {
+    image.at<cv::Vec3b>(row, column) = hit.head<2>().norm() <= radius ? inner : outer;
+  });
+  return image;
+}
+
 // Sixteen views round the disc from above, at 45 and 70 degrees elevation, 0.3 m away.
 inline SurfaceImages ViewsOfDisc(double mask_radius, double height = 0.0) {
   SurfaceImages images;
@@ -46,7 +58,7 @@ inline SurfaceImages ViewsOfDisc(double mask_radius, double height = 0.0) {
     const Eigen::Vector3d target(0.0, 0.0, height);
     const camera::Camera camera = LookingAt(target + centre, target);
     images.views.push_back(
-        {"view_" + std::to_string(k), camera, DiscMask(camera, mask_radius, height)});
+        {"view_" + std::to_string(k), camera, DiscMask(camera, mask_radius, height), cv::Mat()});
   }
   return images;
 }

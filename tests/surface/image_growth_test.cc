@@ -53,6 +53,42 @@ TEST(ImageGrowth, TheFrontStopsWhereTheMasksSeeBackground) {
   EXPECT_NEAR(geometry::SurfaceArea(result.mesh) / DiscArea(leaf), 1.0, 0.06);
 }
 
+// A green leaf's points; its views show green out to 24 mm, then (still plant in the masks, to
+// 30 mm) a red part behind its edge: the front stops where the colour changes.
+TEST(ImageGrowth, TheFrontStopsWhereTheViewsShowAnotherColour) {
+  ClusteredPoints points = test::SpiralDisc(kSampledRadius, kPoints);
+  points.cloud.colors.assign(points.cloud.size(), Eigen::Matrix<uint8_t, 3, 1>(50, 140, 60));
+  const double green = 0.024;
+  SurfaceImages images = ViewsOfDisc(kLeafRadius);
+  for (EvidenceView& view : images.views) {
+    view.image = TwoColourPlane(view.camera, green, cv::Vec3b(60, 140, 50), cv::Vec3b(40, 40, 170));
+  }
+  const SurfaceResult coloured = ReconstructSurface(points, {}, &images);
+  EXPECT_NEAR(geometry::SurfaceArea(coloured.mesh) / DiscArea(green), 1.0, 0.06);
+  EXPECT_GT(coloured.report.image_growth.nodes_other_colour, 0u);
+  // The masks alone, or points without colours: out to the masks' outline.
+  SurfaceOptions masks_only;
+  masks_only.image_growth.colour_agreement = false;
+  const SurfaceResult by_masks = ReconstructSurface(points, masks_only, &images);
+  EXPECT_NEAR(geometry::SurfaceArea(by_masks.mesh) / DiscArea(kLeafRadius), 1.0, 0.05);
+  EXPECT_EQ(by_masks.report.image_growth.nodes_other_colour, 0u);
+  points.cloud.colors.clear();
+  const SurfaceResult uncoloured = ReconstructSurface(points, {}, &images);
+  EXPECT_NEAR(geometry::SurfaceArea(uncoloured.mesh) / DiscArea(kLeafRadius), 1.0, 0.05);
+}
+
+TEST(ImageGrowth, AnImageOfTheWrongKindIsRefusedByName) {
+  const ClusteredPoints points = test::SpiralDisc(kSampledRadius, kPoints);
+  SurfaceImages images = ViewsOfDisc(kLeafRadius);
+  images.views[5].image = cv::Mat(480, 640, CV_8UC1, cv::Scalar(0));
+  try {
+    ReconstructSurface(points, {}, &images);
+    FAIL() << "a grey image was accepted as a colour one";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_NE(std::string(error.what()).find("view_5"), std::string::npos) << error.what();
+  }
+}
+
 TEST(ImageGrowth, GrowthIsLimitedToMaxGrowthSpacings) {
   const ClusteredPoints points = test::SpiralDisc(kSampledRadius, kPoints);
   const SurfaceImages images = ViewsOfDisc(kLeafRadius);
@@ -132,10 +168,27 @@ TEST(SurfaceImagesIo, MasksAreReadBackWithTheirCameras) {
     }
   }
   camera::WriteCamerasJson(folder / "cameras.json", cameras);
+  // View 2 also has its colour image, as the builder writes it.
+  std::filesystem::create_directories(folder / "images");
+  const cv::Mat colour =
+      TwoColourPlane(images.views[2].camera, 0.02, cv::Vec3b(60, 140, 50), cv::Vec3b(40, 40, 170));
+  cv::imwrite((folder / "images" / "view_0002.jpg").string(), colour);
   const SurfaceImages read = ReadSurfaceImages(folder);
   ASSERT_EQ(read.views.size(), 2u);
   EXPECT_EQ(read.views[1].name, "view_0002.jpg");
   EXPECT_EQ(cv::countNonZero(read.views[1].mask != images.views[2].mask), 0);
+  EXPECT_TRUE(read.views[0].image.empty());
+  ASSERT_EQ(read.views[1].image.type(), CV_8UC3);
+  EXPECT_EQ(read.views[1].image.size(), colour.size());
+  cv::imwrite((folder / "images" / "view_0002.jpg").string(), cv::Mat(6, 6, CV_8UC3));
+  try {
+    ReadSurfaceImages(folder);
+    FAIL() << "a 6x6 image for a 640x480 camera was accepted";
+  } catch (const std::runtime_error& error) {
+    EXPECT_NE(std::string(error.what()).find("images/view_0002.jpg"), std::string::npos)
+        << error.what();
+  }
+  std::filesystem::remove(folder / "images" / "view_0002.jpg");
 
   cv::imwrite((folder / "masks" / "view_0002.png").string(), cv::Mat(5, 5, CV_8UC1));
   try {
