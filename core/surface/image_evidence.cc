@@ -2,11 +2,29 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
 namespace avc::surface {
+namespace {
+
+// How many times smaller than its camera's image a colour image is on both axes: 1, 2, 4 or 8
+// (a JPEG decoded reduced, as ReadSurfaceImages does for large images; sizes rounded up), or
+// 0 when it is no such image.
+int ColourReduction(const cv::Mat& image, const camera::Intrinsics& k) {
+  if (image.type() != CV_8UC3) return 0;
+  for (int reduction : {1, 2, 4, 8}) {
+    if (image.cols == (k.width + reduction - 1) / reduction &&
+        image.rows == (k.height + reduction - 1) / reduction) {
+      return reduction;
+    }
+  }
+  return 0;
+}
+
+}  // namespace
 
 ImageEvidence::ImageEvidence(const SurfaceImages& images, const ImageGrowthOptions& options)
     : min_plant_views_(options.min_plant_views),
@@ -18,11 +36,12 @@ ImageEvidence::ImageEvidence(const SurfaceImages& images, const ImageGrowthOptio
           "image growth: the mask of view '{}' is not an 8-bit single-channel {}x{} image",
           view.name, k.width, k.height));
     }
-    if (!view.image.empty() &&
-        (view.image.type() != CV_8UC3 || view.image.size() != view.mask.size())) {
-      throw std::invalid_argument(
-          fmt::format("image growth: the image of view '{}' is not an 8-bit colour {}x{} image",
-                      view.name, k.width, k.height));
+    const int reduction = view.image.empty() ? 1 : ColourReduction(view.image, k);
+    if (reduction == 0) {
+      throw std::invalid_argument(fmt::format(
+          "image growth: the image of view '{}' is not an 8-bit colour {}x{} image (or that "
+          "size reduced 2, 4 or 8 times)",
+          view.name, k.width, k.height));
     }
     // For each background pixel, its distance to the nearest plant pixel.
     cv::Mat distance;
@@ -30,7 +49,7 @@ ImageEvidence::ImageEvidence(const SurfaceImages& images, const ImageGrowthOptio
     cv::Mat says(view.mask.size(), CV_8UC1, cv::Scalar(kNearEdge));
     says.setTo(kClearBackground, distance > options.edge_tolerance_px);
     says.setTo(kPlant, view.mask != 0);
-    views_.push_back({view.camera, std::move(says), view.image});
+    views_.push_back({view.camera, std::move(says), view.image, reduction});
   }
 }
 
@@ -50,7 +69,9 @@ NodeVerdict ImageEvidence::Judge(const Eigen::Vector3d& point, const ColourModel
     if (says == kPlant) {
       ++plant;
       if (colour == nullptr || view.image.empty() ||
-          colour->Agrees(view.image.at<cv::Vec3b>(row, column))) {
+          colour->Agrees(
+              view.image.at<cv::Vec3b>(std::min(row / view.reduction, view.image.rows - 1),
+                                       std::min(column / view.reduction, view.image.cols - 1)))) {
         ++agreeing;
       }
     } else if (says == kClearBackground && ++background >= min_background_views_) {

@@ -25,7 +25,9 @@ struct EvidenceView {
   std::string name;       // for messages
   camera::Camera camera;  // the camera the mask was made in (world -> camera)
   cv::Mat mask;           // CV_8UC1 of the camera's image size: 255 plant, 0 background
-  cv::Mat image;          // optional: CV_8UC3 (BGR) of the same size, for colour agreement
+  // Optional, for colour agreement: CV_8UC3 (BGR) of the camera's size, or reduced 2, 4 or 8
+  // times (sizes rounded up), as a large image is read to save memory.
+  cv::Mat image;
 };
 
 struct SurfaceImages {
@@ -37,7 +39,7 @@ enum class NodeVerdict { kPlant, kBackground, kUnknown, kOtherColour };
 class ImageEvidence {
  public:
   // Throws std::invalid_argument naming the view whose mask is not CV_8UC1 of its camera's
-  // size, or whose image is neither empty nor CV_8UC3 of that size.
+  // size, or whose image is neither empty nor CV_8UC3 of that size (or reduced as above).
   ImageEvidence(const SurfaceImages& images, const ImageGrowthOptions& options);
 
   // kBackground when at least min_background_views views see background clearly at the
@@ -54,8 +56,9 @@ class ImageEvidence {
   static constexpr uint8_t kClearBackground = 0, kNearEdge = 128, kPlant = 255;
   struct PreparedView {
     camera::Camera camera;
-    cv::Mat says;   // CV_8UC1 of kClearBackground, kNearEdge or kPlant
-    cv::Mat image;  // CV_8UC3 or empty (shared with the caller's view)
+    cv::Mat says;       // CV_8UC1 of kClearBackground, kNearEdge or kPlant
+    cv::Mat image;      // CV_8UC3 or empty (shared with the caller's view)
+    int reduction = 1;  // the camera's pixels per image pixel along each axis
   };
   std::vector<PreparedView> views_;
   int min_plant_views_;

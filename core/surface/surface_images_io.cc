@@ -10,20 +10,36 @@
 namespace avc::surface {
 namespace {
 
-// folder/images/<stem>.jpg, the undistorted colour image the builder writes beside the mask;
-// empty when there is none. Throws std::runtime_error naming the file when it cannot be read or
-// its size is not its camera's.
+// Colours are only compared, never located finely: a large image is decoded reduced so that
+// at most about this many pixels remain (a real cell's 18-megapixel views: 2.2 megapixels,
+// 6.7 MB each instead of 54).
+constexpr double kMaxColourPixels = 2.5e6;
+
+// folder/images/<stem>.jpg, the undistorted colour image the builder writes beside the mask,
+// decoded reduced when large; empty when there is none. Throws std::runtime_error naming the
+// file when it cannot be read or its size is not its camera's.
 cv::Mat ReadColourImage(const std::filesystem::path& folder, const camera::NamedCamera& named) {
   std::filesystem::path file = folder / "images" / std::filesystem::path(named.name).filename();
   file.replace_extension(".jpg");
   if (!std::filesystem::is_regular_file(file)) return {};
-  cv::Mat image = cv::imread(file.string(), cv::IMREAD_COLOR);
-  if (image.empty())
-    throw std::runtime_error(fmt::format("{}: not a readable image", file.string()));
   const camera::Intrinsics& k = named.camera.intrinsics;
-  if (image.cols != k.width || image.rows != k.height) {
+  const double pixels = static_cast<double>(k.width) * static_cast<double>(k.height);
+  int reduction = 1;
+  while (reduction < 8 && pixels / (reduction * reduction) > kMaxColourPixels) reduction *= 2;
+  const int flags = reduction == 8   ? cv::IMREAD_REDUCED_COLOR_8
+                    : reduction == 4 ? cv::IMREAD_REDUCED_COLOR_4
+                    : reduction == 2 ? cv::IMREAD_REDUCED_COLOR_2
+                                     : cv::IMREAD_COLOR;
+  cv::Mat image = cv::imread(file.string(), flags);
+  if (image.empty()) {
+    throw std::runtime_error(fmt::format("{}: not a readable image", file.string()));
+  }
+  const int width = (k.width + reduction - 1) / reduction;
+  const int height = (k.height + reduction - 1) / reduction;
+  if (image.cols != width || image.rows != height) {
     throw std::runtime_error(fmt::format("{}: {}x{} pixels, but its camera is {}x{}", file.string(),
-                                         image.cols, image.rows, k.width, k.height));
+                                         image.cols * reduction, image.rows * reduction, k.width,
+                                         k.height));
   }
   return image;
 }

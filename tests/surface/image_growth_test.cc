@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <numbers>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 #include <stdexcept>
 #include <string>
 
@@ -72,6 +73,15 @@ TEST(ImageGrowth, TheFrontStopsWhereTheViewsShowAnotherColour) {
   const SurfaceResult by_masks = ReconstructSurface(points, masks_only, &images);
   EXPECT_NEAR(geometry::SurfaceArea(by_masks.mesh) / DiscArea(kLeafRadius), 1.0, 0.05);
   EXPECT_EQ(by_masks.report.image_growth.nodes_other_colour, 0u);
+  // Images at half the cameras' size (as large images are read) say the same.
+  for (EvidenceView& view : images.views) {
+    cv::Mat half;
+    cv::resize(view.image, half, cv::Size((view.image.cols + 1) / 2, (view.image.rows + 1) / 2), 0,
+               0, cv::INTER_NEAREST);
+    view.image = half;
+  }
+  const SurfaceResult halved = ReconstructSurface(points, {}, &images);
+  EXPECT_NEAR(geometry::SurfaceArea(halved.mesh) / DiscArea(green), 1.0, 0.06);
   points.cloud.colors.clear();
   const SurfaceResult uncoloured = ReconstructSurface(points, {}, &images);
   EXPECT_NEAR(geometry::SurfaceArea(uncoloured.mesh) / DiscArea(kLeafRadius), 1.0, 0.05);
@@ -80,12 +90,15 @@ TEST(ImageGrowth, TheFrontStopsWhereTheViewsShowAnotherColour) {
 TEST(ImageGrowth, AnImageOfTheWrongKindIsRefusedByName) {
   const ClusteredPoints points = test::SpiralDisc(kSampledRadius, kPoints);
   SurfaceImages images = ViewsOfDisc(kLeafRadius);
-  images.views[5].image = cv::Mat(480, 640, CV_8UC1, cv::Scalar(0));
-  try {
-    ReconstructSurface(points, {}, &images);
-    FAIL() << "a grey image was accepted as a colour one";
-  } catch (const std::invalid_argument& error) {
-    EXPECT_NE(std::string(error.what()).find("view_5"), std::string::npos) << error.what();
+  for (const cv::Mat& wrong : {cv::Mat(480, 640, CV_8UC1, cv::Scalar(0)),
+                               cv::Mat(160, 214, CV_8UC3, cv::Scalar(0, 0, 0))}) {
+    images.views[5].image = wrong;  // grey, or a third of the camera's size
+    try {
+      ReconstructSurface(points, {}, &images);
+      FAIL() << "a " << wrong.cols << "x" << wrong.rows << " image was accepted";
+    } catch (const std::invalid_argument& error) {
+      EXPECT_NE(std::string(error.what()).find("view_5"), std::string::npos) << error.what();
+    }
   }
 }
 
@@ -197,6 +210,28 @@ TEST(SurfaceImagesIo, MasksAreReadBackWithTheirCameras) {
   } catch (const std::runtime_error& error) {
     EXPECT_NE(std::string(error.what()).find("view_0002.png"), std::string::npos) << error.what();
   }
+  std::filesystem::remove_all(folder);
+}
+
+TEST(SurfaceImagesIo, ALargeImageIsReadReduced) {
+  const std::filesystem::path folder =
+      std::filesystem::temp_directory_path() / ("avc_surface_large_" + std::to_string(getpid()));
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder / "masks");
+  std::filesystem::create_directories(folder / "images");
+  camera::Camera large = ViewsOfDisc(kLeafRadius).views[0].camera;
+  large.intrinsics.width = 2201;  // 3.7 megapixels: read at half size, rounded up
+  large.intrinsics.height = 1700;
+  camera::WriteCamerasJson(folder / "cameras.json", {{"big.jpg", large}});
+  cv::imwrite((folder / "masks" / "big.png").string(), cv::Mat(1700, 2201, CV_8UC1, 255));
+  cv::imwrite((folder / "images" / "big.jpg").string(),
+              cv::Mat(1700, 2201, CV_8UC3, cv::Scalar(60, 140, 50)));
+  const SurfaceImages read = ReadSurfaceImages(folder);
+  ASSERT_EQ(read.views.size(), 1u);
+  EXPECT_EQ(read.views[0].image.cols, 1101);
+  EXPECT_EQ(read.views[0].image.rows, 850);
+  EXPECT_EQ(read.views[0].mask.cols, 2201);
+  EXPECT_NO_THROW(ImageEvidence(read, ImageGrowthOptions{}));
   std::filesystem::remove_all(folder);
 }
 
