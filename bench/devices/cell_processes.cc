@@ -8,6 +8,7 @@
 
 #include <atomic>
 #include <csignal>
+#include <cstdint>
 #include <deque>
 #include <fstream>
 #include <stdexcept>
@@ -49,9 +50,14 @@ bool CanListenOn(int port) {
 int FreeTcpPort() {
   // Below the kernel's ephemeral range (32768-60999 by default), so no outgoing connection (a
   // driver dialling its device) takes the port before its server binds it. One cursor for the
-  // process keeps cells started at once apart; the pid spreads processes.
+  // process keeps cells started at once apart; the pid spreads processes. Spread by a large
+  // prime, not taken as it is: test processes started one after another have consecutive pids,
+  // and cursors a few ports apart overlap as soon as one process takes a few ports (a port found
+  // free by two processes before either binds it: "Address already in use").
   constexpr int kFirst = 20000, kCount = 12000;
-  static std::atomic<int> cursor{static_cast<int>(getpid() % kCount)};
+  constexpr uint64_t kSpread = 7919;
+  static std::atomic<int> cursor{
+      static_cast<int>(static_cast<uint64_t>(getpid()) * kSpread % kCount)};
   for (int tries = 0; tries < kCount; ++tries) {
     const int port = kFirst + cursor.fetch_add(1) % kCount;
     if (CanListenOn(port)) return port;
