@@ -137,11 +137,12 @@ struct PieceCounts {
 };
 constexpr double kMostlyOne = 0.95;
 
-PieceCounts CountPieces(const std::vector<int32_t>& labels, const geometry::Mesh& mesh,
+PieceCounts CountPieces(const std::map<int32_t, int>& counted, const geometry::Mesh& mesh,
                         const std::vector<int32_t>& leaf_of_face) {
   std::map<int32_t, geometry::Mesh> faces_of_leaf;
-  for (int32_t label : labels) faces_of_leaf[label];
+  for (const auto& [label, unused] : counted) faces_of_leaf[label];
   for (size_t f = 0; f < mesh.faces.size(); ++f) {
+    if (!counted.contains(leaf_of_face[f])) continue;
     geometry::Mesh& leaf = faces_of_leaf[leaf_of_face[f]];
     if (leaf.vertices.empty()) leaf.vertices = mesh.vertices;
     leaf.faces.push_back(mesh.faces[f]);
@@ -167,15 +168,18 @@ PieceCounts CountPieces(const std::vector<int32_t>& labels, const geometry::Mesh
 
 }  // namespace
 
-LeafConnectivity CountConnectedLeaves(const geometry::Mesh& truth, const geometry::Mesh& mesh) {
+LeafConnectivity CountConnectedLeaves(const geometry::Mesh& truth, const geometry::Mesh& mesh,
+                                      bool leaf_labels_only) {
   LeafConnectivity result;
   std::map<int32_t, int> leaves;
-  for (int32_t label : truth.face_labels) leaves[label];
+  for (int32_t label : truth.face_labels) {
+    if (!leaf_labels_only || geometry::labels::IsLeaf(label)) leaves[label];
+  }
   result.leaves = static_cast<int>(leaves.size());
   if (mesh.faces.empty()) return result;
   const FaceLeaves attribution = AttributeFaces(truth, mesh);
-  result.one_component_strict = CountPieces(truth.face_labels, mesh, attribution.nearest).one_piece;
-  const PieceCounts settled = CountPieces(truth.face_labels, mesh, SettleOnMesh(mesh, attribution));
+  result.one_component_strict = CountPieces(leaves, mesh, attribution.nearest).one_piece;
+  const PieceCounts settled = CountPieces(leaves, mesh, SettleOnMesh(mesh, attribution));
   result.one_component = settled.one_piece;
   result.mostly_one = settled.mostly_one;
   return result;

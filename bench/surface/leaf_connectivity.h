@@ -29,7 +29,11 @@ struct LeafConnectivity {
 // benchmark's 0.2 mm sampling noise.
 constexpr double kAmbiguity = 1e-3;
 
-// truth: the leaves' ground truth with face labels. A leaf that got no faces is not connected.
-LeafConnectivity CountConnectedLeaves(const geometry::Mesh& truth, const geometry::Mesh& mesh);
+// truth: the ground truth with face labels, every label a leaf unless leaf_labels_only, which
+// counts only the leaf labels (geometry::labels::IsLeaf) while faces still go to the nearest
+// organ of any label (a scan's mesh also covers the stem and petioles). A leaf that got no
+// faces is not connected.
+LeafConnectivity CountConnectedLeaves(const geometry::Mesh& truth, const geometry::Mesh& mesh,
+                                      bool leaf_labels_only = false);
 
 }  // namespace avc::bench

@@ -6,6 +6,7 @@
 #include "bench/leaf_figures.h"
 #include "bench/mvs/isolated_run.h"
 #include "bench/mvs/plant_organs.h"
+#include "bench/surface/leaf_connectivity.h"
 #include "core/dataset/dataset_reader.h"
 #include "core/eval/metrics.h"
 #include "core/eval/report_json.h"
@@ -35,6 +36,10 @@ nlohmann::json SurfaceAndScore(const messages::ClustersContent& clusters,
   // The traits as a scan reports them, against the same measures of the truth.
   figures["total_area_ratio"] = surface.traits.total_area / expected.leaf_area;
   figures["height_ratio"] = surface.traits.height / expected.height;
+  // Faces go to the nearest organ (the mesh covers stems and petioles too); leaves are counted.
+  const LeafConnectivity leaves = CountConnectedLeaves(truth, surface.mesh, true);
+  figures["leaves"] = leaves.leaves;
+  figures["connected_leaves"] = leaves.one_component;
   figures["faces"] = surface.mesh.faces.size();
   figures["seconds"] = seconds;
   return figures;
@@ -90,6 +95,8 @@ std::vector<ScanSurfaceRow> RunScanSurfaceCase(const std::string& preset,
       row.recall_2mm = figures["recall_2mm"].get<double>();
       row.total_area_ratio = figures["total_area_ratio"].get<double>();
       row.height_ratio = figures["height_ratio"].get<double>();
+      row.leaves = figures["leaves"].get<int>();
+      row.connected_leaves = figures["connected_leaves"].get<int>();
       row.faces = figures["faces"].get<size_t>();
       row.seconds = figures["seconds"].get<double>();
     }

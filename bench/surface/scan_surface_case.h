@@ -32,6 +32,8 @@ struct ScanSurfaceRow {
   double ground_error = 0;      // m, where the height is measured from (the soil found, else the
                                 // proxy's base) minus the true soil's mean height
   bool soil_found = false;      // the builder found the soil (else the proxy's base was used)
+  int leaves = 0;               // leaves of the plant
+  int connected_leaves = 0;     // ... whose mesh faces are one piece (leaf_connectivity.h)
   size_t faces = 0;
   double seconds = 0;  // surfacing only
 };

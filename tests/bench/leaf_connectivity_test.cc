@@ -51,6 +51,21 @@ TEST(LeafConnectivity, ACopyOfTheTruthHasEveryLeafInOnePiece) {
   EXPECT_DOUBLE_EQ(result.Fraction(), 1.0);
 }
 
+TEST(LeafConnectivity, OnlyLeafLabelsCountWhenAsked) {
+  // A stem (label 1, not a leaf) cut in two beside a whole leaf (a leaf label).
+  const int32_t leaf = geometry::labels::kLeafBase;
+  const geometry::Mesh truth = Join(Sheet(0, 10, 0, 1), Sheet(11, 20, 0, leaf));
+  const geometry::Mesh mesh =
+      Join(Join(Sheet(0, 4, 0, 0), Sheet(6, 10, 0, 0)), Sheet(11, 20, 0, 0));
+  const LeafConnectivity all = CountConnectedLeaves(truth, mesh);
+  EXPECT_EQ(all.leaves, 2);
+  EXPECT_EQ(all.one_component, 1);  // the stem's two pieces count against it
+  const LeafConnectivity leaves = CountConnectedLeaves(truth, mesh, true);
+  EXPECT_EQ(leaves.leaves, 1);
+  EXPECT_EQ(leaves.one_component, 1);
+  EXPECT_DOUBLE_EQ(leaves.Fraction(), 1.0);
+}
+
 TEST(LeafConnectivity, ALeafCutAcrossIsTwoPieces) {
   // Leaf 1 reconstructed as two halves 2 mm apart, leaf 2 whole.
   const geometry::Mesh mesh =
