@@ -102,7 +102,6 @@ class GapStitcher {
     for (const Eigen::Vector3i& t : mesh_.faces) {
       for (int k = 0; k < 3; ++k) half_edges_.insert(HalfEdgeKey(t[k], t[(k + 1) % 3]));
     }
-    link_.radius = static_cast<float>(rule.distance);
     link_.normals = rule.link_slope >= 0.0f ? &normals_ : nullptr;
     link_.slope = rule.link_slope;
     link_.mean_slope = rule.link_mean_slope;

@@ -8,12 +8,8 @@
 #include <stdexcept>
 
 namespace avc::surface {
-namespace {
 
-// How many times smaller than its camera's image a colour image is on both axes: 1, 2, 4 or 8
-// (a JPEG decoded reduced, as ReadSurfaceImages does for large images; sizes rounded up), or
-// 0 when it is no such image.
-int ColourReduction(const cv::Mat& image, const camera::Intrinsics& k) {
+int ColourImageReduction(const cv::Mat& image, const camera::Intrinsics& k) {
   if (image.type() != CV_8UC3) return 0;
   for (int reduction : {1, 2, 4, 8}) {
     if (image.cols == (k.width + reduction - 1) / reduction &&
@@ -23,8 +19,6 @@ int ColourReduction(const cv::Mat& image, const camera::Intrinsics& k) {
   }
   return 0;
 }
-
-}  // namespace
 
 ImageEvidence::ImageEvidence(const SurfaceImages& images, const ImageGrowthOptions& options)
     : min_plant_views_(options.min_plant_views),
@@ -36,7 +30,7 @@ ImageEvidence::ImageEvidence(const SurfaceImages& images, const ImageGrowthOptio
           "image growth: the mask of view '{}' is not an 8-bit single-channel {}x{} image",
           view.name, k.width, k.height));
     }
-    const int reduction = view.image.empty() ? 1 : ColourReduction(view.image, k);
+    const int reduction = view.image.empty() ? 1 : ColourImageReduction(view.image, k);
     if (reduction == 0) {
       throw std::invalid_argument(fmt::format(
           "image growth: the image of view '{}' is not an 8-bit colour {}x{} image (or that "

@@ -34,6 +34,11 @@ struct SurfaceImages {
   std::vector<EvidenceView> views;
 };
 
+// How many times smaller than its camera's image a colour image is on both axes: 1, 2, 4 or 8
+// (sizes rounded up, as a JPEG decoded reduced), or 0 when it is not a CV_8UC3 image of such a
+// size.
+int ColourImageReduction(const cv::Mat& image, const camera::Intrinsics& k);
+
 enum class NodeVerdict { kPlant, kBackground, kUnknown, kOtherColour };
 
 class ImageEvidence {

@@ -32,9 +32,9 @@ namespace {
 
 // The colour model of the cell's own points (vertices from samples), when they have colours.
 std::optional<ColourModel> CellColourModel(const Cell& cell, const ColourModelOptions& options) {
-  if (cell.mesh.colors.size() != cell.mesh.vertices.size()) return std::nullopt;
+  if (cell.mesh.colors.size() != cell.source_points.size()) return std::nullopt;
   std::vector<Eigen::Matrix<uint8_t, 3, 1>> colours;
-  for (size_t v = 0; v < cell.source_points.size() && v < cell.mesh.colors.size(); ++v) {
+  for (size_t v = 0; v < cell.source_points.size(); ++v) {
     if (cell.source_points[v] >= 0) colours.push_back(cell.mesh.colors[v]);
   }
   return ColourModel::Fit(colours, options);

@@ -34,9 +34,7 @@ cv::Mat ReadColourImage(const std::filesystem::path& folder, const camera::Named
   if (image.empty()) {
     throw std::runtime_error(fmt::format("{}: not a readable image", file.string()));
   }
-  const int width = (k.width + reduction - 1) / reduction;
-  const int height = (k.height + reduction - 1) / reduction;
-  if (image.cols != width || image.rows != height) {
+  if (ColourImageReduction(image, k) != reduction) {
     throw std::runtime_error(fmt::format("{}: {}x{} pixels, but its camera is {}x{}", file.string(),
                                          image.cols * reduction, image.rows * reduction, k.width,
                                          k.height));

@@ -61,6 +61,11 @@ bool MeasureScales(const UsablePoints& usable, const SurfaceOptions& options, do
   }
 }
 
+// Two points lie on one local surface when their offset rises off the tangent planes by at most
+// the link slope plus this many noise sigmas: the pieces of a cluster (Phase 1) and, when asked,
+// the stitches between clusters (Phase 4).
+constexpr double kSameSurfaceNoiseAllowance = 3.0;
+
 // Phase 1: every cluster, piece by piece, into cells. Marks each usable point's cell.
 std::vector<Cell> TriangulateClusters(const ClusteredPoints& input, const ClusterMembers& members,
                                       const SurfaceThresholds& thresholds, UsablePoints* usable,
@@ -69,8 +74,8 @@ std::vector<Cell> TriangulateClusters(const ClusteredPoints& input, const Cluste
   std::vector<int> cell_of_input(input.cloud.size(), -1);
   for (size_t c = 0; c < members.ids.size(); ++c) {
     const std::vector<uint32_t>& group = members.points[c];
-    const auto pieces =
-        SplitIntoPieces(input, group, thresholds.piece_link, 3.0 * thresholds.noise);
+    const auto pieces = SplitIntoPieces(input, group, thresholds.piece_link,
+                                        kSameSurfaceNoiseAllowance * thresholds.noise);
     std::string problem;
     size_t made = 0;
     for (const std::vector<uint32_t>& piece : pieces) {
@@ -169,9 +174,6 @@ size_t RemoveSmallComponents(geometry::Mesh& mesh, int min_faces) {
   return removed;
 }
 
-// The link test's allowance for the points' noise across the surface, as the pieces' (3 noise).
-constexpr double kStitchLinkNoiseAllowance = 3.0;
-
 // Phase 4: cells stitched into one mesh, junction holes filled, final smoothing.
 geometry::Mesh MergeCells(const std::vector<Cell>& cells, const SurfaceOptions& options,
                           const SurfaceThresholds& thresholds, SurfaceReport* report) {
@@ -189,7 +191,7 @@ geometry::Mesh MergeCells(const std::vector<Cell>& cells, const SurfaceOptions& 
   rule.max_tilt_deg = options.max_stitch_tilt_deg;
   if (options.stitch_link_mean_slope >= 0.0) {
     rule.link_mean_slope = static_cast<float>(options.stitch_link_mean_slope);
-    rule.link_allowance = static_cast<float>(kStitchLinkNoiseAllowance * thresholds.noise);
+    rule.link_allowance = static_cast<float>(kSameSurfaceNoiseAllowance * thresholds.noise);
   } else {
     rule.link_slope = -1.0f;
   }
