@@ -11,6 +11,7 @@
 #include "bench/nbv/view_set_build.h"
 #include "bench/summary.h"
 #include "core/eval/coverage.h"
+#include "core/eval/coverage_oracle.h"
 #include "services/planner/active_vision.h"
 #include "services/planner/baseline_views.h"
 #include "services/planner/information_gain.h"
@@ -38,11 +39,9 @@ std::vector<double> CoverageCurve(const eval::CoverageModel& model,
   return curve;
 }
 
-nlohmann::json MethodJson(const std::string& name, const eval::CoverageModel& model,
-                          const std::vector<camera::Camera>& cameras) {
-  const std::vector<double> curve = CoverageCurve(model, cameras);
+nlohmann::json CurveJson(const std::string& name, const std::vector<double>& curve) {
   nlohmann::json json = {{"method", name},
-                         {"images", cameras.size()},
+                         {"images", curve.size()},
                          {"coverage", curve.empty() ? 0.0 : curve.back()}};
   for (const int n : {10, 20, 30}) {
     if (static_cast<int>(curve.size()) >= n) json[fmt::format("after_{}", n)] = curve[n - 1];
@@ -50,6 +49,31 @@ nlohmann::json MethodJson(const std::string& name, const eval::CoverageModel& mo
   const auto reach = std::find_if(curve.begin(), curve.end(), [](double c) { return c >= 0.9; });
   if (reach != curve.end()) json["images_to_90"] = reach - curve.begin() + 1;
   return json;
+}
+
+nlohmann::json MethodJson(const std::string& name, const eval::CoverageModel& model,
+                          const std::vector<camera::Camera>& cameras) {
+  return CurveJson(name, CoverageCurve(model, cameras));
+}
+
+// The sphere's views a planner that knew the ground truth would take (eval/coverage_oracle.h):
+// the coverage n views of the sphere allow, for n = each count in `counts`.
+std::vector<nlohmann::json> OracleJson(const eval::CoverageModel& model,
+                                       const std::vector<camera::Camera>& sphere,
+                                       const std::vector<int>& counts) {
+  std::vector<std::vector<uint8_t>> seen;
+  for (const camera::Camera& camera : sphere) seen.push_back(model.SeenBy(camera));
+  const int most = *std::max_element(counts.begin(), counts.end());
+  const eval::OracleSelection oracle =
+      eval::GreedyCoverageSelection(seen, model.options().min_views, most);
+  std::vector<nlohmann::json> methods;
+  for (const int n : counts) {
+    // The oracle stops early when no view adds coverage: its curve is flat from there.
+    std::vector<double> curve(oracle.coverage.begin(),
+                              oracle.coverage.begin() + std::min<size_t>(n, oracle.coverage.size()));
+    methods.push_back(CurveJson(fmt::format("ground-truth greedy ({})", n), curve));
+  }
+  return methods;
 }
 
 std::vector<camera::Camera> Cameras(const std::vector<planner::CellView>& views) {
@@ -127,6 +151,10 @@ nlohmann::json RunNbvCase(const NbvCase& nbv_case) {
       planner::SphereViews(cell, frame, dense_elevations, 24);
   methods.push_back(
       method(fmt::format("all sphere views ({}, ceiling)", sphere.size()), Cameras(sphere), false));
+  for (nlohmann::json& oracle :
+       OracleJson(model, Cameras(sphere), {static_cast<int>(kept.size()), n})) {
+    methods.push_back(std::move(oracle));
+  }
   // At our image count, on the proxy box our run found.
   const int ours_count = static_cast<int>(kept.size());
   methods.push_back(method(fmt::format("information gain ({})", ours_count),

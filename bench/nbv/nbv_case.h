@@ -21,8 +21,9 @@ struct NbvCase {
   bool build = false;
 };
 
-// Figures: per method (ours, orbit 3x10, one static, two static, random, information gain at our
-// image count) the images, coverage,
+// Figures: per method (ours, orbit 3x10, one static, two static, random, the sphere ceiling, the
+// sphere's views chosen greedily on the ground truth at our image count and at baseline_views,
+// information gain at our image count) the images, coverage,
 // coverage after 10/20/30 images and images to 90 %; ours also captured, planning seconds per
 // next-best-view iteration (median, max), patches, failing patches and notes; with `build`, each
 // set's points, points per image and their mean distance to the plant (view_set_build.h).
