@@ -40,9 +40,8 @@ std::vector<double> CoverageCurve(const eval::CoverageModel& model,
 }
 
 nlohmann::json CurveJson(const std::string& name, const std::vector<double>& curve) {
-  nlohmann::json json = {{"method", name},
-                         {"images", curve.size()},
-                         {"coverage", curve.empty() ? 0.0 : curve.back()}};
+  nlohmann::json json = {
+      {"method", name}, {"images", curve.size()}, {"coverage", curve.empty() ? 0.0 : curve.back()}};
   for (const int n : {10, 20, 30}) {
     if (static_cast<int>(curve.size()) >= n) json[fmt::format("after_{}", n)] = curve[n - 1];
   }
@@ -69,8 +68,9 @@ std::vector<nlohmann::json> OracleJson(const eval::CoverageModel& model,
   std::vector<nlohmann::json> methods;
   for (const int n : counts) {
     // The oracle stops early when no view adds coverage: its curve is flat from there.
-    std::vector<double> curve(oracle.coverage.begin(),
-                              oracle.coverage.begin() + std::min<size_t>(n, oracle.coverage.size()));
+    std::vector<double> curve(
+        oracle.coverage.begin(),
+        oracle.coverage.begin() + std::min<size_t>(n, oracle.coverage.size()));
     methods.push_back(CurveJson(fmt::format("ground-truth greedy ({})", n), curve));
   }
   return methods;
@@ -109,8 +109,9 @@ nlohmann::json RunNbvCase(const NbvCase& nbv_case) {
   const planner::ActiveVisionResult ours =
       planner::RunActiveVision(cell, [&](const planner::CellView& view) { return capture(view); });
 
-  std::vector<camera::Camera> kept, initial;
+  std::vector<camera::Camera> kept, initial, captured;
   for (const planner::PlannedView& v : ours.views) {
+    captured.push_back(v.view.camera);
     if (v.kept) kept.push_back(v.view.camera);
     if (v.phase == "initial") initial.push_back(v.view.camera);
   }
@@ -128,6 +129,7 @@ nlohmann::json RunNbvCase(const NbvCase& nbv_case) {
   }
   our_json["notes"] = ours.notes;
   methods.push_back(our_json);
+  methods.push_back(method("ours before Phase 3", captured, false));
   methods.push_back(method("orbit 3x10 (Phase 1 alone)", initial, true));
 
   // The baselines around the same framed plant: the middle height's distance and the aim.

@@ -14,9 +14,9 @@ OracleSelection GreedyCoverageSelection(const std::vector<std::vector<uint8_t>>&
   const size_t samples = seen.empty() ? 0 : seen.front().size();
   for (size_t v = 0; v < seen.size(); ++v) {
     if (seen[v].size() != samples) {
-      throw std::invalid_argument(fmt::format(
-          "coverage oracle: candidate {} has {} samples, candidate 0 has {}", v, seen[v].size(),
-          samples));
+      throw std::invalid_argument(
+          fmt::format("coverage oracle: candidate {} has {} samples, candidate 0 has {}", v,
+                      seen[v].size(), samples));
     }
   }
   OracleSelection selection;
