@@ -220,7 +220,16 @@ struct Run {
     const std::vector<PatchesSeen> seen = SeenByEveryView(patches);
     std::vector<bool> keep(seen.size(), true);
     if (options.remove_redundant) {
-      keep = KeepNonRedundant(seen, options.visibility, {}, options.prune_holds_failing_scores);
+      std::vector<PatchesSeen> faces;
+      if (options.prune_order_by_faces) {
+        faces.resize(seen.size());
+        tbb::parallel_for(size_t{0}, faces.size(), [&](size_t v) {
+          faces[v] =
+              FacesSeenBy(*result.proxy, patches, result.views[v].view.camera, options.visibility);
+        });
+      }
+      keep =
+          KeepNonRedundant(seen, options.visibility, {}, options.prune_holds_failing_scores, faces);
     }
     PatchViewCounts counts;
     for (size_t v = 0; v < seen.size(); ++v) {

@@ -35,11 +35,11 @@ bool Sees(const ppr::PlantProxy& proxy, const camera::Camera& camera, const Eige
       hit, true, range);
 }
 
-}  // namespace
-
-double SeenFraction(const ppr::PlantProxy& proxy, const SurfacePatch& patch,
-                    const camera::Camera& camera, const VisibilityOptions& options) {
-  if (patch.points.empty()) return 0;
+// Calls seen(bool) for each sampled face of the patch, in order.
+template <typename SeenFunction>
+void ForSampledFaces(const ppr::PlantProxy& proxy, const SurfacePatch& patch,
+                     const camera::Camera& camera, const VisibilityOptions& options,
+                     SeenFunction&& seen) {
   // Stop the ray before the face's own voxel: a face on the far side of a one-voxel leaf is the
   // leaf's other side, seen through it.
   const double stop_short = 1.01 * proxy.voxel_size();
@@ -49,11 +49,30 @@ double SeenFraction(const ppr::PlantProxy& proxy, const SurfacePatch& patch,
   // enough (+-0.1 at 32) and bounds the cost on fine proxies.
   const size_t stride = std::max<size_t>(
       1, (patch.points.size() + options.max_sampled_faces - 1) / options.max_sampled_faces);
-  size_t seen = 0, tried = 0;
-  for (size_t f = 0; f < patch.points.size(); f += stride, ++tried) {
-    seen += Sees(proxy, camera, eye, patch.points[f], patch.normal, stop_short, cos_limit);
+  for (size_t f = 0; f < patch.points.size(); f += stride) {
+    seen(Sees(proxy, camera, eye, patch.points[f], patch.normal, stop_short, cos_limit));
   }
-  return static_cast<double>(seen) / tried;
+}
+
+}  // namespace
+
+double SeenFraction(const ppr::PlantProxy& proxy, const SurfacePatch& patch,
+                    const camera::Camera& camera, const VisibilityOptions& options) {
+  size_t seen = 0, tried = 0;
+  ForSampledFaces(proxy, patch, camera, options, [&](bool sees) {
+    seen += sees;
+    ++tried;
+  });
+  return tried == 0 ? 0 : static_cast<double>(seen) / tried;
+}
+
+PatchesSeen FacesSeenBy(const ppr::PlantProxy& proxy, const std::vector<SurfacePatch>& patches,
+                        const camera::Camera& camera, const VisibilityOptions& options) {
+  PatchesSeen seen;
+  for (const SurfacePatch& patch : patches) {
+    ForSampledFaces(proxy, patch, camera, options, [&](bool sees) { seen.push_back(sees); });
+  }
+  return seen;
 }
 
 PatchesSeen PatchesSeenBy(const ppr::PlantProxy& proxy, const std::vector<SurfacePatch>& patches,

@@ -37,6 +37,11 @@ double SeenFraction(const ppr::PlantProxy& proxy, const SurfacePatch& patch,
 PatchesSeen PatchesSeenBy(const ppr::PlantProxy& proxy, const std::vector<SurfacePatch>& patches,
                           const camera::Camera& camera, const VisibilityOptions& options = {});
 
+// Per sampled face of every patch (the faces SeenFraction tests, patch after patch): 1 when the
+// view sees it.
+PatchesSeen FacesSeenBy(const ppr::PlantProxy& proxy, const std::vector<SurfacePatch>& patches,
+                        const camera::Camera& camera, const VisibilityOptions& options = {});
+
 // Adds one view's PatchesSeenBy to the counts (sized on the first call), or takes it away.
 void AddView(const PatchesSeen& seen, PatchViewCounts* counts);
 void RemoveView(const PatchesSeen& seen, PatchViewCounts* counts);

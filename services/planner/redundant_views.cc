@@ -1,7 +1,10 @@
 #include "services/planner/redundant_views.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <limits>
+#include <stdexcept>
 
 namespace avc::planner {
 namespace {
@@ -27,9 +30,19 @@ bool ScoresHold(const PatchViewCounts& counts, const std::vector<double>& floor,
 std::vector<bool> KeepNonRedundant(const std::vector<PatchesSeen>& seen,
                                    const VisibilityOptions& options,
                                    const std::vector<bool>& protected_views,
-                                   bool hold_failing_scores) {
+                                   bool hold_failing_scores,
+                                   const std::vector<PatchesSeen>& faces_seen) {
   std::vector<bool> keep(seen.size(), true);
   if (seen.empty()) return keep;
+  if (!faces_seen.empty() && faces_seen.size() != seen.size()) {
+    throw std::invalid_argument(
+        fmt::format("redundant views: faces seen by {} views, patches seen by {}",
+                    faces_seen.size(), seen.size()));
+  }
+  // Usefulness is counted on the faces when given, else on the patches.
+  const std::vector<PatchesSeen>& useful = faces_seen.empty() ? seen : faces_seen;
+  PatchViewCounts useful_counts;
+  for (const PatchesSeen& view : useful) AddView(view, &useful_counts);
   PatchViewCounts counts;
   for (const PatchesSeen& view : seen) AddView(view, &counts);
   std::vector<double> floor = PatchScores(counts, options);
@@ -42,7 +55,7 @@ std::vector<bool> KeepNonRedundant(const std::vector<PatchesSeen>& seen,
     size_t best_critical = std::numeric_limits<size_t>::max();
     for (size_t v = seen.size(); v-- > 0;) {
       if (!keep[v] || tried[v] || (v < protected_views.size() && protected_views[v])) continue;
-      const size_t critical = CriticalPatches(seen[v], counts, options.min_views);
+      const size_t critical = CriticalPatches(useful[v], useful_counts, options.min_views);
       if (critical < best_critical) {
         best = v;
         best_critical = critical;
@@ -54,6 +67,7 @@ std::vector<bool> KeepNonRedundant(const std::vector<PatchesSeen>& seen,
     // A view that cannot go now never can: later removals only lower the counts.
     if (ScoresHold(counts, floor, options)) {
       keep[best] = false;
+      RemoveView(useful[best], &useful_counts);
     } else {
       AddView(seen[best], &counts);
     }

@@ -7,7 +7,9 @@
 // `hold_failing_scores`, which keeps each such patch at its score with all views. Views are
 // tried least useful first: fewest patches for which the view is one of exactly min_views views
 // (the patches it keeps at the threshold), ties by later capture; usefulness is recomputed after
-// each removal.
+// each removal. Given `faces_seen` (per view, FacesSeenBy), usefulness is counted on the patches'
+// sampled faces instead: a view goes first when it is the last needed view of the fewest faces,
+// which a patch that passes with half its faces seen does not tell.
 
 #include <cstdint>
 #include <vector>
@@ -20,6 +22,7 @@ namespace avc::planner {
 std::vector<bool> KeepNonRedundant(const std::vector<PatchesSeen>& seen,
                                    const VisibilityOptions& options,
                                    const std::vector<bool>& protected_views = {},
-                                   bool hold_failing_scores = false);
+                                   bool hold_failing_scores = false,
+                                   const std::vector<PatchesSeen>& faces_seen = {});
 
 }  // namespace avc::planner

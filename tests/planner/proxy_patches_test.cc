@@ -76,5 +76,29 @@ TEST(PatchVisibility, AViewSeesTheNearSideAndNotTheFarSide) {
   for (size_t p = 0; p < patches.size(); ++p) EXPECT_EQ(counts[p], seen[p]);
 }
 
+TEST(PatchVisibility, FacesSeenAgreeWithEachPatchsSeenFraction) {
+  const ppr::PlantProxy proxy = CarvedSphere();
+  const std::vector<SurfacePatch> patches = ProxySurfacePatches(proxy);
+  const camera::Camera camera =
+      ppr::testing::LookAt(Eigen::Vector3d(0.3, 0.2, 0.1), Eigen::Vector3d::Zero());
+  const PatchesSeen faces = FacesSeenBy(proxy, patches, camera);
+  size_t next = 0, partly_seen = 0;
+  for (const SurfacePatch& patch : patches) {
+    // Every stride-th face, the stride keeping at most max_sampled_faces; one patch's follow
+    // each other.
+    const size_t most = VisibilityOptions{}.max_sampled_faces;
+    const size_t stride = (patch.points.size() + most - 1) / most;
+    const size_t sampled = (patch.points.size() + stride - 1) / stride;
+    ASSERT_LE(next + sampled, faces.size());
+    size_t seen = 0;
+    for (size_t k = 0; k < sampled; ++k) seen += faces[next++];
+    const double fraction = SeenFraction(proxy, patch, camera);
+    partly_seen += fraction > 0 && fraction < 1;
+    EXPECT_DOUBLE_EQ(fraction, static_cast<double>(seen) / sampled);
+  }
+  EXPECT_EQ(next, faces.size());
+  EXPECT_GT(partly_seen, 0u);  // the test sees patches at the sphere's rim
+}
+
 }  // namespace
 }  // namespace avc::planner

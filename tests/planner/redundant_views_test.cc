@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+
 namespace avc::planner {
 namespace {
 
@@ -52,6 +54,22 @@ TEST(KeepNonRedundant, AFailingPatchDoesNotHoldViewsAPassingOneNeeds) {
   const std::vector<bool> held = KeepNonRedundant(seen, options, {}, true);
   EXPECT_TRUE(held[2]);
   EXPECT_EQ(std::count(held.begin(), held.end(), true), 3);
+}
+
+TEST(KeepNonRedundant, FacesDecideWhichViewIsLeastUseful) {
+  VisibilityOptions options;
+  options.min_views = 2;
+  // One patch of four faces, seen (half its faces or more) by all three views, so any one view
+  // may go. View 0 sees faces 0-1, view 1 all four, view 2 faces 1-3. By patches no view is
+  // critical and the later capture goes (view 2): faces 2 and 3 are left with one view. By faces
+  // view 0 is the last needed view of face 0 only, view 2 of faces 2 and 3: view 0 goes, and
+  // faces 1-3 keep two views.
+  const std::vector<PatchesSeen> seen = {{1}, {1}, {1}};
+  const std::vector<PatchesSeen> faces = {{1, 1, 0, 0}, {1, 1, 1, 1}, {0, 1, 1, 1}};
+  EXPECT_EQ(KeepNonRedundant(seen, options), (std::vector<bool>{true, true, false}));
+  EXPECT_EQ(KeepNonRedundant(seen, options, {}, false, faces),
+            (std::vector<bool>{false, true, true}));
+  EXPECT_THROW(KeepNonRedundant(seen, options, {}, false, {{1}}), std::invalid_argument);
 }
 
 }  // namespace
