@@ -40,6 +40,7 @@ nlohmann::json SurfaceAndScore(const messages::ClustersContent& clusters,
   const LeafConnectivity leaves = CountConnectedLeaves(truth, surface.mesh, true);
   figures["leaves"] = leaves.leaves;
   figures["connected_leaves"] = leaves.one_component;
+  figures["mostly_one_leaves"] = leaves.mostly_one;
   figures["faces"] = surface.mesh.faces.size();
   figures["seconds"] = seconds;
   return figures;
@@ -97,6 +98,7 @@ std::vector<ScanSurfaceRow> RunScanSurfaceCase(const std::string& preset,
       row.height_ratio = figures["height_ratio"].get<double>();
       row.leaves = figures["leaves"].get<int>();
       row.connected_leaves = figures["connected_leaves"].get<int>();
+      row.mostly_one_leaves = figures["mostly_one_leaves"].get<int>();
       row.faces = figures["faces"].get<size_t>();
       row.seconds = figures["seconds"].get<double>();
     }

@@ -34,6 +34,7 @@ struct ScanSurfaceRow {
   bool soil_found = false;      // the builder found the soil (else the proxy's base was used)
   int leaves = 0;               // leaves of the plant
   int connected_leaves = 0;     // ... whose mesh faces are one piece (leaf_connectivity.h)
+  int mostly_one_leaves = 0;    // ... whose largest piece holds >= 95 % of their faces' area
   size_t faces = 0;
   double seconds = 0;  // surfacing only
 };

@@ -93,12 +93,13 @@ void PrintScanTable(const std::vector<ScanSurfaceRow>& rows) {
                "level sets; the meshes scored against the plant's leaves (as avc bench e2e).\n"
                "ground mm: where the height trait starts (the soil the builder found, or the\n"
                "proxy's base) minus the true soil's height. leaves 1c: leaves whose faces are\n"
-               "one piece (faces given to the nearest organ, ambiguous ones settled).\n";
+               "one piece (faces given to the nearest organ, ambiguous ones settled); 95%: leaves\n"
+               "whose largest piece holds at least 95 % of their faces' area.\n";
   std::cout << fmt::format(
-      "{:<10} {:<24} {:>6} {:>7} {:>10} {:>7} {:>7} {:>8} {:>10} {:>7} {:>11} {:>9} {:>7} "
+      "{:<10} {:<24} {:>6} {:>7} {:>10} {:>7} {:>7} {:>8} {:>10} {:>7} {:>11} {:>9} {:>6} {:>7} "
       "{:>8}\n",
       "plant", "Phase 2", "images", "merged", "leaf area", "P@2mm", "R@2mm", "acc mm", "area trait",
-      "height", "ground mm", "leaves 1c", "faces", "surf s");
+      "height", "ground mm", "leaves 1c", "95%", "faces", "surf s");
   for (const ScanSurfaceRow& row : rows) {
     const std::string lead = fmt::format("{:<10} {:<24}", row.preset, row.method);
     if (!row.ok) {
@@ -107,11 +108,12 @@ void PrintScanTable(const std::vector<ScanSurfaceRow>& rows) {
     }
     std::cout << fmt::format(
         "{} {:>6} {:>7} {:>10.3f} {:>6.1f}% {:>6.1f}% {:>8.3f} {:>10.3f} {:>7.3f} {:>+6.2f} {:<4} "
-        "{:>9} {:>7} {:>8.2f}\n",
+        "{:>9} {:>6} {:>7} {:>8.2f}\n",
         lead, row.images, row.merged_points, row.leaf_area_ratio, 100 * row.precision_2mm,
         100 * row.recall_2mm, 1e3 * row.accuracy_mean, row.total_area_ratio, row.height_ratio,
         1e3 * row.ground_error, row.soil_found ? "soil" : "base",
-        fmt::format("{}/{}", row.connected_leaves, row.leaves), row.faces, row.seconds);
+        fmt::format("{}/{}", row.connected_leaves, row.leaves),
+        fmt::format("{}/{}", row.mostly_one_leaves, row.leaves), row.faces, row.seconds);
   }
 }
 
