@@ -22,17 +22,23 @@ namespace {
 
 constexpr double kDegree = M_PI / 180;
 
-// Coverage of the first 1, 2, ... cameras: curve[n - 1] after n.
-std::vector<double> CoverageCurve(const eval::CoverageModel& model,
-                                  const std::vector<camera::Camera>& cameras) {
-  std::vector<int> counts(model.samples().size(), 0);
+// Per camera, the samples it sees.
+std::vector<std::vector<uint8_t>> SeenByEach(const eval::CoverageModel& model,
+                                             const std::vector<camera::Camera>& cameras) {
+  std::vector<std::vector<uint8_t>> seen;
+  for (const camera::Camera& camera : cameras) seen.push_back(model.SeenBy(camera));
+  return seen;
+}
+
+// Coverage of the first 1, 2, ... views: curve[n - 1] after n.
+std::vector<double> CoverageCurve(const std::vector<std::vector<uint8_t>>& seen_by_each,
+                                  size_t samples, int min_views) {
+  std::vector<int> counts(samples, 0);
   std::vector<double> curve;
-  const int needed = model.options().min_views;
   size_t covered = 0;
-  for (const camera::Camera& camera : cameras) {
-    const std::vector<uint8_t> seen = model.SeenBy(camera);
+  for (const std::vector<uint8_t>& seen : seen_by_each) {
     for (size_t s = 0; s < seen.size(); ++s) {
-      if (seen[s] && ++counts[s] == needed) ++covered;
+      if (seen[s] && ++counts[s] == min_views) ++covered;
     }
     curve.push_back(counts.empty() ? 0.0 : static_cast<double>(covered) / counts.size());
   }
@@ -52,19 +58,16 @@ nlohmann::json CurveJson(const std::string& name, const std::vector<double>& cur
 
 nlohmann::json MethodJson(const std::string& name, const eval::CoverageModel& model,
                           const std::vector<camera::Camera>& cameras) {
-  return CurveJson(name, CoverageCurve(model, cameras));
+  return CurveJson(name, CoverageCurve(SeenByEach(model, cameras), model.samples().size(),
+                                       model.options().min_views));
 }
 
 // The sphere's views a planner that knew the ground truth would take (eval/coverage_oracle.h):
 // the coverage n views of the sphere allow, for n = each count in `counts`.
-std::vector<nlohmann::json> OracleJson(const eval::CoverageModel& model,
-                                       const std::vector<camera::Camera>& sphere,
-                                       const std::vector<int>& counts) {
-  std::vector<std::vector<uint8_t>> seen;
-  for (const camera::Camera& camera : sphere) seen.push_back(model.SeenBy(camera));
+std::vector<nlohmann::json> OracleJson(const std::vector<std::vector<uint8_t>>& sphere_seen,
+                                       int min_views, const std::vector<int>& counts) {
   const int most = *std::max_element(counts.begin(), counts.end());
-  const eval::OracleSelection oracle =
-      eval::GreedyCoverageSelection(seen, model.options().min_views, most);
+  const eval::OracleSelection oracle = eval::GreedyCoverageSelection(sphere_seen, min_views, most);
   std::vector<nlohmann::json> methods;
   for (const int n : counts) {
     // The oracle stops early when no view adds coverage: its curve is flat from there.
@@ -151,10 +154,13 @@ nlohmann::json RunNbvCase(const NbvCase& nbv_case) {
   for (int e = 5; e <= 85; e += 10) dense_elevations.push_back(e * kDegree);
   const std::vector<planner::CellView> sphere =
       planner::SphereViews(cell, frame, dense_elevations, 24);
-  methods.push_back(
-      method(fmt::format("all sphere views ({}, ceiling)", sphere.size()), Cameras(sphere), false));
+  // Each sphere view's samples, once for both the ceiling and the ground-truth greedy rows.
+  const std::vector<std::vector<uint8_t>> sphere_seen = SeenByEach(model, Cameras(sphere));
+  const int min_views = model.options().min_views;
+  methods.push_back(CurveJson(fmt::format("all sphere views ({}, ceiling)", sphere.size()),
+                              CoverageCurve(sphere_seen, model.samples().size(), min_views)));
   for (nlohmann::json& oracle :
-       OracleJson(model, Cameras(sphere), {static_cast<int>(kept.size()), n})) {
+       OracleJson(sphere_seen, min_views, {static_cast<int>(kept.size()), n})) {
     methods.push_back(std::move(oracle));
   }
   // At our image count, on the proxy box our run found.

@@ -138,15 +138,21 @@ struct Run {
     ProxyChanged();
   }
 
-  // Views in parallel: each is independent, and the tree is built before (tree() is lazy).
-  std::vector<PatchesSeen> SeenByEveryView(const std::vector<SurfacePatch>& patches) const {
+  // `seen_by` (PatchesSeenBy or FacesSeenBy) for every view. Views in parallel: each is
+  // independent, and the tree is built before (tree() is lazy).
+  template <typename SeenBy>
+  std::vector<PatchesSeen> EveryView(const std::vector<SurfacePatch>& patches,
+                                     SeenBy&& seen_by) const {
     std::vector<PatchesSeen> seen(result.views.size());
     result.proxy->tree();
     tbb::parallel_for(size_t{0}, seen.size(), [&](size_t v) {
-      seen[v] =
-          PatchesSeenBy(*result.proxy, patches, result.views[v].view.camera, options.visibility);
+      seen[v] = seen_by(*result.proxy, patches, result.views[v].view.camera, options.visibility);
     });
     return seen;
+  }
+
+  std::vector<PatchesSeen> SeenByEveryView(const std::vector<SurfacePatch>& patches) const {
+    return EveryView(patches, PatchesSeenBy);
   }
 
   void ActiveVision() {
@@ -217,17 +223,18 @@ struct Run {
 
   void RemoveRedundantAndRefine() {
     const std::vector<SurfacePatch> patches = ProxySurfacePatches(*result.proxy, options.patches);
-    const std::vector<PatchesSeen> seen = SeenByEveryView(patches);
+    // Ordering by faces casts the rays per face once; the patches' verdicts follow from them.
+    std::vector<PatchesSeen> faces, seen;
+    if (options.remove_redundant && options.prune_order_by_faces) {
+      faces = EveryView(patches, FacesSeenBy);
+      for (const PatchesSeen& view : faces) {
+        seen.push_back(PatchesSeenFromFaces(patches, view, options.visibility));
+      }
+    } else {
+      seen = SeenByEveryView(patches);
+    }
     std::vector<bool> keep(seen.size(), true);
     if (options.remove_redundant) {
-      std::vector<PatchesSeen> faces;
-      if (options.prune_order_by_faces) {
-        faces.resize(seen.size());
-        tbb::parallel_for(size_t{0}, faces.size(), [&](size_t v) {
-          faces[v] =
-              FacesSeenBy(*result.proxy, patches, result.views[v].view.camera, options.visibility);
-        });
-      }
       keep =
           KeepNonRedundant(seen, options.visibility, {}, options.prune_holds_failing_scores, faces);
     }

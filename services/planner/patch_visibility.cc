@@ -1,9 +1,11 @@
 #include "services/planner/patch_visibility.h"
 
+#include <fmt/format.h>
 #include <octomap/OcTree.h>
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace avc::planner {
 namespace {
@@ -35,6 +37,12 @@ bool Sees(const ppr::PlantProxy& proxy, const camera::Camera& camera, const Eige
       hit, true, range);
 }
 
+// Every stride-th face of a patch is tested.
+size_t SampleStride(const SurfacePatch& patch, const VisibilityOptions& options) {
+  return std::max<size_t>(
+      1, (patch.points.size() + options.max_sampled_faces - 1) / options.max_sampled_faces);
+}
+
 // Calls seen(bool) for each sampled face of the patch, in order.
 template <typename SeenFunction>
 void ForSampledFaces(const ppr::PlantProxy& proxy, const SurfacePatch& patch,
@@ -47,8 +55,7 @@ void ForSampledFaces(const ppr::PlantProxy& proxy, const SurfacePatch& patch,
   const Eigen::Vector3d eye = camera.T_cam_world.inverse().translation();
   // An evenly strided sample of at most max_sampled_faces faces estimates the fraction well
   // enough (+-0.1 at 32) and bounds the cost on fine proxies.
-  const size_t stride = std::max<size_t>(
-      1, (patch.points.size() + options.max_sampled_faces - 1) / options.max_sampled_faces);
+  const size_t stride = SampleStride(patch, options);
   for (size_t f = 0; f < patch.points.size(); f += stride) {
     seen(Sees(proxy, camera, eye, patch.points[f], patch.normal, stop_short, cos_limit));
   }
@@ -71,6 +78,30 @@ PatchesSeen FacesSeenBy(const ppr::PlantProxy& proxy, const std::vector<SurfaceP
   PatchesSeen seen;
   for (const SurfacePatch& patch : patches) {
     ForSampledFaces(proxy, patch, camera, options, [&](bool sees) { seen.push_back(sees); });
+  }
+  return seen;
+}
+
+size_t SampledFaceCount(const SurfacePatch& patch, const VisibilityOptions& options) {
+  const size_t stride = SampleStride(patch, options);
+  return (patch.points.size() + stride - 1) / stride;
+}
+
+PatchesSeen PatchesSeenFromFaces(const std::vector<SurfacePatch>& patches, const PatchesSeen& faces,
+                                 const VisibilityOptions& options) {
+  PatchesSeen seen(patches.size());
+  size_t next = 0;
+  for (size_t p = 0; p < patches.size(); ++p) {
+    const size_t sampled = SampledFaceCount(patches[p], options);
+    if (next + sampled > faces.size()) {
+      throw std::invalid_argument(fmt::format(
+          "patch visibility: {} faces seen for patches that sample more", faces.size()));
+    }
+    size_t count = 0;
+    for (size_t k = 0; k < sampled; ++k) count += faces[next++];
+    // As SeenFraction computes it, so both give the same verdict.
+    const double fraction = sampled == 0 ? 0 : static_cast<double>(count) / sampled;
+    seen[p] = fraction >= options.min_seen_fraction;
   }
   return seen;
 }

@@ -42,6 +42,14 @@ PatchesSeen PatchesSeenBy(const ppr::PlantProxy& proxy, const std::vector<Surfac
 PatchesSeen FacesSeenBy(const ppr::PlantProxy& proxy, const std::vector<SurfacePatch>& patches,
                         const camera::Camera& camera, const VisibilityOptions& options = {});
 
+// How many of the patch's faces SeenFraction tests (every stride-th, at most max_sampled_faces).
+size_t SampledFaceCount(const SurfacePatch& patch, const VisibilityOptions& options = {});
+
+// PatchesSeenBy from a view's FacesSeenBy, without casting the rays again. Throws
+// std::invalid_argument when `faces` is shorter than the patches' sampled faces.
+PatchesSeen PatchesSeenFromFaces(const std::vector<SurfacePatch>& patches, const PatchesSeen& faces,
+                                 const VisibilityOptions& options = {});
+
 // Adds one view's PatchesSeenBy to the counts (sized on the first call), or takes it away.
 void AddView(const PatchesSeen& seen, PatchViewCounts* counts);
 void RemoveView(const PatchesSeen& seen, PatchViewCounts* counts);

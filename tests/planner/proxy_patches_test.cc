@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 
 #include "services/planner/patch_visibility.h"
 #include "tests/ppr/synthetic_views.h"
@@ -84,11 +85,10 @@ TEST(PatchVisibility, FacesSeenAgreeWithEachPatchsSeenFraction) {
   const PatchesSeen faces = FacesSeenBy(proxy, patches, camera);
   size_t next = 0, partly_seen = 0;
   for (const SurfacePatch& patch : patches) {
-    // Every stride-th face, the stride keeping at most max_sampled_faces; one patch's follow
-    // each other.
-    const size_t most = VisibilityOptions{}.max_sampled_faces;
-    const size_t stride = (patch.points.size() + most - 1) / most;
-    const size_t sampled = (patch.points.size() + stride - 1) / stride;
+    // One patch's sampled faces follow each other.
+    const size_t sampled = SampledFaceCount(patch);
+    ASSERT_GT(sampled, 0u);
+    ASSERT_LE(sampled, VisibilityOptions{}.max_sampled_faces);
     ASSERT_LE(next + sampled, faces.size());
     size_t seen = 0;
     for (size_t k = 0; k < sampled; ++k) seen += faces[next++];
@@ -98,6 +98,9 @@ TEST(PatchVisibility, FacesSeenAgreeWithEachPatchsSeenFraction) {
   }
   EXPECT_EQ(next, faces.size());
   EXPECT_GT(partly_seen, 0u);  // the test sees patches at the sphere's rim
+  // The patches' verdicts from the faces are PatchesSeenBy's.
+  EXPECT_EQ(PatchesSeenFromFaces(patches, faces), PatchesSeenBy(proxy, patches, camera));
+  EXPECT_THROW(PatchesSeenFromFaces(patches, PatchesSeen(faces.size() - 1)), std::invalid_argument);
 }
 
 }  // namespace
