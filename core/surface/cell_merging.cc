@@ -3,8 +3,10 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <unordered_set>
 #include <utility>
 
@@ -99,6 +101,9 @@ class GapStitcher {
         min_facing_(std::cos(rule.max_tilt_deg * std::numbers::pi / 180.0)),
         normals_(rule.link_slope >= 0.0f ? UnitVertexNormals(mesh)
                                          : std::vector<Eigen::Vector3f>{}) {
+    if (rule.clear_of_other_cells && !mesh_.vertices.empty() && rule.distance > 0.0) {
+      vertex_grid_.emplace(mesh_.vertices, static_cast<float>(rule.distance));
+    }
     for (const Eigen::Vector3i& t : mesh_.faces) {
       for (int k = 0; k < 3; ++k) half_edges_.insert(HalfEdgeKey(t[k], t[(k + 1) % 3]));
     }
@@ -148,7 +153,27 @@ class GapStitcher {
     const Eigen::Vector3d n = (mesh_.vertices[face[1]].cast<double>() - p)
                                   .cross(mesh_.vertices[face[2]].cast<double>() - p);
     const double length = n.norm();
-    return length > 0.0 && n.dot(normal) >= min_facing_ * length;
+    if (!(length > 0.0 && n.dot(normal) >= min_facing_ * length)) return false;
+    return !vertex_grid_ || NearestCellIsOwn(face);
+  }
+
+  // The vertex nearest the face's centroid (within the stitch distance) belongs to one of the
+  // face's own cells: a bridge between two cells does not pass over or under a third (at a
+  // rosette's centre the gap between two leaf bases lies over the base of a third leaf).
+  bool NearestCellIsOwn(const Eigen::Vector3i& face) const {
+    const Eigen::Vector3f centroid =
+        (mesh_.vertices[face[0]] + mesh_.vertices[face[1]] + mesh_.vertices[face[2]]) / 3.0f;
+    float best = std::numeric_limits<float>::max();
+    int best_cell = -1;
+    vertex_grid_->ForEachWithin(centroid, vertex_grid_->cell_size(), [&](uint32_t j) {
+      const float d = (mesh_.vertices[j] - centroid).squaredNorm();
+      if (d < best) {
+        best = d;
+        best_cell = vertex_cell_[j];
+      }
+    });
+    return best_cell < 0 || best_cell == vertex_cell_[face[0]] ||
+           best_cell == vertex_cell_[face[1]] || best_cell == vertex_cell_[face[2]];
   }
 
   // An edge between two cells: within the stitch distance for their clusters, and between
@@ -180,7 +205,8 @@ class GapStitcher {
   double min_facing_;
   std::vector<Eigen::Vector3f> normals_;  // per vertex, unit
   cluster::LinkRule link_;
-  std::unordered_set<uint64_t> half_edges_;  // membership only: order never matters
+  std::optional<cluster::PointGrid> vertex_grid_;  // over every vertex, when clear_of_other_cells
+  std::unordered_set<uint64_t> half_edges_;        // membership only: order never matters
 };
 
 }  // namespace

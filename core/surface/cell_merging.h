@@ -6,12 +6,14 @@
 // the plane of the two cells' mean normal and triangulated (2-D Delaunay), and a triangle is
 // kept when it lies in the gap: it spans at least two cells, each of its edges within one cell
 // is a free boundary edge of that cell on the far side, edges between cells are within the stitch
-// distance, it faces within max_tilt of the mean normal, and it keeps every edge manifold and
-// consistently oriented. The rule may ask more between cells of different clusters: that each
-// such edge joins two points of one local surface (the clusterer's link test on the vertices'
-// normals), so that leaves meeting at the base of a rosette, one a few millimetres above the
-// next, are left apart while the clusters the normal constraint cut out of one bent leaf are
-// joined again; and it may stitch the cells of one cluster across wider gaps.
+// distance, it faces within max_tilt of the mean normal, it keeps every edge manifold and
+// consistently oriented, and it does not pass over or under a third cell (the vertex nearest its
+// centroid is one of its own cells'), so that at a rosette's centre, where the leaf bases lie
+// stacked a few millimetres apart, two leaves are not bridged across a third. The rule may ask
+// more between cells of different clusters: that each such edge joins two points of one local
+// surface (the clusterer's link test on the vertices' normals), so that stacked leaves are left
+// apart while the clusters the normal constraint cut out of one bent leaf are joined again; and
+// it may stitch the cells of one cluster across wider gaps.
 
 #include <Eigen/Core>
 #include <cstddef>
@@ -42,6 +44,9 @@ struct StitchRule {
   float link_slope = 0.5f;
   float link_mean_slope = 0.1f;
   float link_allowance = 0;  // m
+  // A stitch triangle is refused when the vertex nearest its centroid belongs to a third cell:
+  // the bridge would pass over or under that cell (SurfaceOptions::stitch_clear_of_other_cells).
+  bool clear_of_other_cells = true;
 };
 
 // mesh: joined cells (JoinCells); cell_normals and cell_labels per cell. New faces take the

@@ -189,6 +189,7 @@ geometry::Mesh MergeCells(const std::vector<Cell>& cells, const SurfaceOptions& 
   rule.distance = thresholds.stitch_distance;
   rule.own_cluster_distance = thresholds.own_cluster_stitch_distance;
   rule.max_tilt_deg = options.max_stitch_tilt_deg;
+  rule.clear_of_other_cells = options.stitch_clear_of_other_cells;
   if (options.stitch_link_mean_slope >= 0.0) {
     rule.link_mean_slope = static_cast<float>(options.stitch_link_mean_slope);
     rule.link_allowance = static_cast<float>(kSameSurfaceNoiseAllowance * thresholds.noise);

@@ -277,6 +277,52 @@ TEST(CellMerging, OneClusterIsStitchedAcrossWiderGaps) {
   EXPECT_EQ(StitchedAcrossStep(0.0f, 0, rule), 12u);
 }
 
+TEST(CellMerging, BridgesDoNotPassOverAThirdCell) {
+  // Two level strips with a gap of 1, and a third cell (a 6 x 1 strip of another cluster, at
+  // half the pitch) lying 0.3 over the gap, like a leaf base over the gap between two others at
+  // a rosette's centre.
+  TwoCells cells = JoinedStrips(6, 2, Eigen::Vector3f(0.0f, 3.0f, 0.0f), 1);
+  Cell over;
+  over.cluster = 2;
+  over.mesh = Grid(12, 0.5f);
+  std::vector<bool> keep(over.mesh.faces.size());
+  for (size_t f = 0; f < keep.size(); ++f) keep[f] = f < 48;
+  KeepFaces(over.mesh, keep);
+  RemoveUnusedVertices(over.mesh);
+  for (Eigen::Vector3f& v : over.mesh.vertices) v += Eigen::Vector3f(0.25f, 2.0f, 0.3f);
+  over.mesh.face_labels.assign(over.mesh.faces.size(), 2);
+  const size_t first_over = cells.mesh.vertices.size();
+  cells.mesh.Append(over.mesh);
+  cells.vertex_cell.resize(cells.mesh.vertices.size(), 2);
+  // Faces joining the two strips (a vertex of each, none of the third cell).
+  const auto strip_to_strip = [&](const geometry::Mesh& mesh, size_t first_new) {
+    size_t count = 0;
+    for (size_t f = first_new; f < mesh.faces.size(); ++f) {
+      bool lower = false, upper = false, third = false;
+      for (int k = 0; k < 3; ++k) {
+        const int cell = cells.vertex_cell[mesh.faces[f][k]];
+        lower |= cell == 0;
+        upper |= cell == 1;
+        third |= static_cast<size_t>(mesh.faces[f][k]) >= first_over;
+      }
+      count += lower && upper && !third;
+    }
+    return count;
+  };
+  const std::vector<Eigen::Vector3d> normals(3, Eigen::Vector3d::UnitZ());
+  StitchRule rule = Rule(1.8);
+  rule.link_slope = -1.0f;
+  for (const bool clear : {false, true}) {
+    geometry::Mesh mesh = cells.mesh;
+    rule.clear_of_other_cells = clear;
+    StitchCells(mesh, cells.vertex_cell, normals, {0, 1, 2}, rule);
+    // Without the rule the strips are bridged under the third cell (12 faces over the gap).
+    EXPECT_EQ(strip_to_strip(mesh, cells.mesh.faces.size()), clear ? 0u : 12u) << clear;
+  }
+  // Away from the third cell the rule changes nothing.
+  EXPECT_EQ(StitchedAcrossStep(0.0f, 1, rule), 12u);
+}
+
 }  // namespace
 }  // namespace avc::surface
 

@@ -299,10 +299,12 @@ TEST(SurfaceReconstructionInput, GivenSpacingOverridesTheMeasuredOne) {
   const SurfaceResult result = ReconstructSurface(test::SpiralDisc(kRadius, 1000), options);
   EXPECT_DOUBLE_EQ(result.report.thresholds.spacing, 0.002);
   EXPECT_DOUBLE_EQ(result.report.thresholds.alpha, 0.008);
-  // One cluster's cells are stitched as far as any two (3.5 spacings) unless told otherwise.
-  EXPECT_DOUBLE_EQ(result.report.thresholds.own_cluster_stitch_distance, 0.007);
-  options.own_cluster_stitch_factor = 5.0;
-  EXPECT_DOUBLE_EQ(ResolveThresholds(options, 0.002, 0.0).own_cluster_stitch_distance, 0.01);
+  // One cluster's cells are stitched across 5.25 spacings, any two across 3.5; 0 asks for the
+  // same distance.
+  EXPECT_DOUBLE_EQ(result.report.thresholds.stitch_distance, 0.007);
+  EXPECT_DOUBLE_EQ(result.report.thresholds.own_cluster_stitch_distance, 0.0105);
+  options.own_cluster_stitch_factor = 0.0;
+  EXPECT_DOUBLE_EQ(ResolveThresholds(options, 0.002, 0.0).own_cluster_stitch_distance, 0.007);
 }
 
 }  // namespace

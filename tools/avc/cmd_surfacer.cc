@@ -70,6 +70,11 @@ void RegisterSurfacer(CLI::App& root, int* exit_code) {
                    "off; 0.1 with --own-cluster-stitch-factor 5.25 joins a rosette's leaves "
                    "better, see BENCHMARKS.md)")
       ->capture_default_str();
+  command->add_flag(
+      "--stitch-over-other-cells",
+      [args](int64_t) { args->node.surfacing.surface.stitch_clear_of_other_cells = false; },
+      "let Phase 4's stitches pass over or under a third cell (refused by default: at a "
+      "rosette's centre they join two leaves across a third)");
   command
       ->add_option("--refine-subdivisions", surface.refine_subdivisions,
                    "1-to-4 subdivisions of each cell before its vertices are moved onto the "
