@@ -102,7 +102,8 @@ class GapStitcher {
         normals_(rule.link_slope >= 0.0f ? UnitVertexNormals(mesh)
                                          : std::vector<Eigen::Vector3f>{}) {
     if (rule.clear_of_other_cells && !mesh_.vertices.empty() && rule.distance > 0.0) {
-      vertex_grid_.emplace(mesh_.vertices, static_cast<float>(rule.distance));
+      clearance_radius_ = static_cast<float>(rule.distance);
+      vertex_grid_.emplace(mesh_.vertices, clearance_radius_);
     }
     for (const Eigen::Vector3i& t : mesh_.faces) {
       for (int k = 0; k < 3; ++k) half_edges_.insert(HalfEdgeKey(t[k], t[(k + 1) % 3]));
@@ -165,7 +166,7 @@ class GapStitcher {
         (mesh_.vertices[face[0]] + mesh_.vertices[face[1]] + mesh_.vertices[face[2]]) / 3.0f;
     float best = std::numeric_limits<float>::max();
     int best_cell = -1;
-    vertex_grid_->ForEachWithin(centroid, vertex_grid_->cell_size(), [&](uint32_t j) {
+    vertex_grid_->ForEachWithin(centroid, clearance_radius_, [&](uint32_t j) {
       const float d = (mesh_.vertices[j] - centroid).squaredNorm();
       if (d < best) {
         best = d;
@@ -205,6 +206,7 @@ class GapStitcher {
   double min_facing_;
   std::vector<Eigen::Vector3f> normals_;  // per vertex, unit
   cluster::LinkRule link_;
+  float clearance_radius_ = 0;                     // m: the stitch distance between clusters
   std::optional<cluster::PointGrid> vertex_grid_;  // over every vertex, when clear_of_other_cells
   std::unordered_set<uint64_t> half_edges_;        // membership only: order never matters
 };
