@@ -1,9 +1,9 @@
 #pragma once
 
-// A cell: one cluster triangulated on its regression plane and lifted back onto the original
-// points (paper §4, Phase 1). Phase 2 (image-driven level sets, not yet implemented) would grow
-// a cell's boundary in plane coordinates and append the new vertices (source_points -1) before
-// Phase 3 smooths and repairs it.
+// A cell: one piece of a cluster triangulated on its regression plane and lifted back onto the
+// original points (paper §4, Phase 1). Phase 2 grows its outline (new vertices have
+// source_points -1), Phase 3 smooths and repairs it, and a cell Phase 3 leaves in several
+// pieces becomes one cell per piece (cell_islands.h) before Phase 4 stitches cells together.
 
 #include <cstdint>
 #include <vector>

@@ -9,6 +9,7 @@
 #include "core/cluster/data_scale.h"
 #include "core/cluster/point_grid.h"
 #include "core/surface/boundary_growth.h"
+#include "core/surface/cell_islands.h"
 #include "core/surface/cluster_pieces.h"
 #include "core/surface/hole_filling.h"
 #include "core/surface/image_growth.h"
@@ -252,6 +253,7 @@ SurfaceResult ReconstructSurface(const ClusteredPoints& input, const SurfaceOpti
   }
   report.area_modified = total_area(cells);
   std::erase_if(cells, [](const Cell& cell) { return cell.mesh.faces.empty(); });
+  cells = SplitCellsIntoPieces(std::move(cells), &report.cell_islands);
   report.cells = cells.size();
   report.thresholds = thresholds;
 

@@ -8,7 +8,8 @@
 //  Phase 3 (mesh_modifications.h): long triangles and slivers removed, small holes filled,
 //          Laplacian smoothing (interior, then boundary); then each cell subdivided and moved
 //          onto the surface fitted to its samples (surface_refinement.h).
-//  Phase 4 (cell_merging.h): neighbouring cells stitched into a connected surface; the holes
+//  Phase 4 (cell_merging.h): neighbouring cells stitched into a connected surface (a cell that
+//          Phase 3 left in pieces counts as one cell per piece, cell_islands.h); the holes
 //          left where several cells meet are filled, then a final smoothing.
 // Thresholds are multiples of the measured point spacing (surface_options.h). The output's
 // face_labels hold the cluster id of each face, colours are the points' when given.
@@ -35,6 +36,7 @@ struct SurfaceReport {
   size_t used_points = 0;  // assigned and finite
   size_t clusters = 0;
   size_t cells = 0;            // triangulated pieces of clusters (cell.h)
+  size_t cell_islands = 0;     // ... of which split off a cell by Phase 3 (cell_islands.h)
   size_t points_left_out = 0;  // usable points in pieces that could not be triangulated
   size_t phase1_faces = 0;     // Delaunay triangles kept by alpha
   size_t grown_vertices = 0;   // vertices added by the growth (either kind)

@@ -105,8 +105,9 @@ INSTANTIATE_TEST_SUITE_P(Presets, PlantSurfaceTest, ::testing::ValuesIn(sim::All
 // Phase 4 at the rosette's centre, where the leaf bases lie stacked a few millimetres apart:
 // stitches that would pass over a third leaf's cell are refused, and the cells of one leaf are
 // stitched across the wider gaps of its sparsely sampled arching tip (both the defaults,
-// surface_options.h). Measured with seed 1: 16 of 18 leaves in one piece, 9 with neither rule.
-// The optional link test between clusters keeps them apart as well.
+// surface_options.h), also where Phase 3 cut the tip off its cell (cell_islands.h). Measured
+// with seed 1: 17 of 18 leaves in one piece, 10 with neither rule. The optional link test
+// between clusters keeps them apart as well.
 TEST(PlantSurface, StitchesLeaveTheRosettesStackedLeafBasesApart) {
   SurfaceOptions neither;
   neither.stitch_clear_of_other_cells = false;
@@ -116,11 +117,11 @@ TEST(PlantSurface, StitchesLeaveTheRosettesStackedLeafBasesApart) {
   const Figures before = Measure(sim::PlantPreset::kRosette, 1, false, neither);
   const Figures by_default = Measure(sim::PlantPreset::kRosette, 1, false);
   const Figures with_link = Measure(sim::PlantPreset::kRosette, 1, false, linked);
-  EXPECT_GE(by_default.connected_leaves, 16);
+  EXPECT_GE(by_default.connected_leaves, 17);
   EXPECT_GE(by_default.connected_leaves, before.connected_leaves + 5);
   EXPECT_LT(by_default.rmse, 0.00046);
   EXPECT_GE(by_default.area_ratio, 0.95);
-  EXPECT_GE(with_link.connected_leaves, 15);
+  EXPECT_GE(with_link.connected_leaves, 16);
   EXPECT_LT(with_link.rmse, 0.0004);
   EXPECT_GE(with_link.area_ratio, 0.9);
   std::printf(

@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "core/surface/boundary_growth.h"
+#include "core/surface/cell_islands.h"
 #include "core/surface/cell_merging.h"
 #include "core/surface/fitted_surface.h"
 #include "core/surface/hole_filling.h"
@@ -321,6 +322,49 @@ TEST(CellMerging, BridgesDoNotPassOverAThirdCell) {
   }
   // Away from the third cell the rule changes nothing.
   EXPECT_EQ(StitchedAcrossStep(0.0f, 1, rule), 12u);
+}
+
+TEST(CellIslands, APieceCutOffACellIsStitchedBackAsACellOfItsOwn) {
+  // A 10 x 10 grid with its fourth row of squares removed (as Phase 3 may remove the long
+  // triangles across a leaf's narrow neck): one cell in two pieces, a gap of 1 between them.
+  Cell cell;
+  cell.cluster = 7;
+  cell.mesh = Grid(10);
+  Punch(cell.mesh, 10,
+        {{0, 3}, {1, 3}, {2, 3}, {3, 3}, {4, 3}, {5, 3}, {6, 3}, {7, 3}, {8, 3}, {9, 3}});
+  for (size_t v = 0; v < cell.mesh.vertices.size(); ++v) {
+    cell.source_points.push_back(static_cast<int32_t>(100 + v));
+  }
+  const Cell whole = cell;
+  size_t islands = 0;
+  std::vector<Cell> pieces = SplitCellsIntoPieces({cell}, &islands);
+  ASSERT_EQ(pieces.size(), 2u);
+  EXPECT_EQ(islands, 1u);
+  EXPECT_EQ(pieces[0].mesh.faces.size(), 60u);   // rows 0-2
+  EXPECT_EQ(pieces[1].mesh.faces.size(), 120u);  // rows 4-9
+  for (const Cell& piece : pieces) {
+    EXPECT_EQ(piece.cluster, 7);
+    ASSERT_EQ(piece.source_points.size(), piece.mesh.vertices.size());
+    for (size_t v = 0; v < piece.mesh.vertices.size(); ++v) {
+      // Each vertex keeps its own input point: the grid's row-major index + 100.
+      const Eigen::Vector3f& p = piece.mesh.vertices[v];
+      EXPECT_EQ(piece.source_points[v], static_cast<int32_t>(100 + 11 * p.y() + p.x()));
+    }
+  }
+  // Phase 4 then bridges the gap (20 faces), which it never does within one cell.
+  const auto stitched_faces = [](const std::vector<Cell>& cells) {
+    std::vector<int> vertex_cell;
+    geometry::Mesh mesh = JoinCells(cells, &vertex_cell);
+    const std::vector<Eigen::Vector3d> normals(cells.size(), Eigen::Vector3d::UnitZ());
+    return StitchCells(mesh, vertex_cell, normals, std::vector<int32_t>(cells.size(), 7), Rule(1.6))
+        .faces;
+  };
+  EXPECT_EQ(stitched_faces({whole}), 0u);
+  EXPECT_EQ(stitched_faces(pieces), 20u);
+  // A cell in one piece stays as it is.
+  pieces = SplitCellsIntoPieces({pieces[0]}, &islands);
+  EXPECT_EQ(pieces.size(), 1u);
+  EXPECT_EQ(islands, 0u);
 }
 
 }  // namespace
