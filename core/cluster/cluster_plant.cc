@@ -211,6 +211,7 @@ Assignment ClusterPlant(const PointSet& set, const ClusterOptions& options, Clus
   out.outliers += MergeSpuriousGroups(grid, points, spurious, link_radius, &assignment);
   out.reassigned_points = ReassignDistalPoints(grid, points, normals, link_radius,
                                                options.reassignment_rounds, &assignment);
+  out.reassigned_points += RejoinStrandedParts(neighbours, min_points, &scratch, &assignment);
   // Reassignment may empty a cluster: renumber by smallest point index, no gaps.
   std::vector<int32_t> renumber(accepted.size(), kUnassigned);
   int32_t next_id = 0;

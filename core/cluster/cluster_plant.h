@@ -26,7 +26,9 @@
 //  Every new part is split into its connected components; parts smaller than
 //  min_cluster_points are spurious and join the cluster they touch at the end.
 //  3. Outlier / incorrect-patch constraint (reassignment.h): points that fit a neighbouring
-//     cluster's local plane better than their own (normal and distance) move there.
+//     cluster's local plane better than their own (normal and distance) move there; then a
+//     part of fewer than min_cluster_points that its cluster's links no longer reach joins the
+//     cluster it is linked to most.
 //
 // Every threshold is derived from the data (data_scale.h): spacing = median nearest-neighbour
 // distance, noise = median local plane residual; options override them. Deterministic: no

@@ -125,4 +125,41 @@ size_t MergeSpuriousGroups(const PointGrid& grid, const std::vector<Eigen::Vecto
   return unassigned;
 }
 
+size_t RejoinStrandedParts(const NeighbourLists& neighbours, size_t min_points,
+                           std::vector<int32_t>* scratch, std::vector<int32_t>* cluster_of) {
+  std::vector<int32_t>& owner = *cluster_of;
+  int32_t clusters = 0;
+  for (int32_t id : owner) clusters = std::max(clusters, id + 1);
+  std::vector<std::vector<uint32_t>> members(static_cast<size_t>(clusters));
+  for (size_t i = 0; i < owner.size(); ++i) {
+    if (owner[i] != kUnassigned) members[owner[i]].push_back(static_cast<uint32_t>(i));
+  }
+  std::vector<std::pair<std::vector<uint32_t>, int32_t>> moves;
+  std::vector<size_t> links(static_cast<size_t>(clusters));
+  for (int32_t c = 0; c < clusters; ++c) {
+    const auto parts = ConnectedComponents(neighbours, members[c], scratch);
+    if (parts.size() < 2) continue;
+    const auto largest =
+        std::max_element(parts.begin(), parts.end(),
+                         [](const auto& a, const auto& b) { return a.size() < b.size(); });
+    for (auto part = parts.begin(); part != parts.end(); ++part) {
+      if (part == largest || part->size() >= min_points) continue;
+      std::fill(links.begin(), links.end(), 0);
+      for (uint32_t i : *part) {
+        for (const uint32_t* j = neighbours.begin(i); j != neighbours.end(i); ++j) {
+          if (owner[*j] != kUnassigned && owner[*j] != c) ++links[owner[*j]];
+        }
+      }
+      const auto most = std::max_element(links.begin(), links.end());
+      if (*most > 0) moves.emplace_back(*part, static_cast<int32_t>(most - links.begin()));
+    }
+  }
+  size_t moved = 0;
+  for (const auto& [part, target] : moves) {
+    for (uint32_t i : part) owner[i] = target;
+    moved += part.size();
+  }
+  return moved;
+}
+
 }  // namespace avc::cluster

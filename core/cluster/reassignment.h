@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/cluster/neighbour_lists.h"
 #include "core/cluster/point_grid.h"
 
 namespace avc::cluster {
@@ -33,5 +34,13 @@ size_t ReassignDistalPoints(const PointGrid& grid, const std::vector<Eigen::Vect
 size_t MergeSpuriousGroups(const PointGrid& grid, const std::vector<Eigen::Vector3f>& points,
                            const std::vector<std::vector<uint32_t>>& groups, float link_radius,
                            std::vector<int32_t>* cluster_of);
+
+// After the moves above, a cluster may hold a few points that its own links no longer reach (a
+// strip of a wavy margin left behind by a neck cut, whose neighbours of its cluster have moved).
+// Each part of a cluster, other than its largest, smaller than min_points and linked
+// (neighbours' link rule) to other clusters' points joins the cluster it has most links to (ties:
+// the lower id); decisions use the state at the start. Returns the number of points moved.
+size_t RejoinStrandedParts(const NeighbourLists& neighbours, size_t min_points,
+                           std::vector<int32_t>* scratch, std::vector<int32_t>* cluster_of);
 
 }  // namespace avc::cluster
