@@ -87,6 +87,7 @@ std::string ReportHtml(const fs::path& scan_dir) {
   html += report::ViewsSection(in);
   html += report::CoverageSection(in);
   html += report::ClustersSection(in);
+  html += report::SurfaceSection(in);
   html += report::CalibrationSection(in);
   html += report::PlannerSection(in);
   html += report::NotesSection(in);

@@ -163,6 +163,39 @@ std::string ClustersSection(const ReportInputs& in) {
   return html;
 }
 
+std::string SurfaceSection(const ReportInputs& in) {
+  const json surface = in.report.value("surface", json::object());
+  if (!surface.is_object() || surface.empty()) return "";
+  std::string html = "<h2>Surface</h2>\n";
+  html += fmt::format(
+      "<p>{} clusters of {} points ({} left out: too few or collinear to triangulate) became {} "
+      "cells; {} stitch faces joined them into {} connected pieces.</p>\n",
+      Number(surface, "clusters", 1, 0), Number(surface, "points_used", 1, 0),
+      Number(surface, "points_left_out", 1, 0), Number(surface, "cells", 1, 0),
+      Number(surface, "stitch_faces", 1, 0), Number(surface, "components", 1, 0));
+  const json area = surface.value("area_m2_after_phase", json::object());
+  html += "<table><tr><th>after phase</th><th>area (cm²)</th></tr>\n";
+  const char* phases[][2] = {{"1", "1: triangulated cells"},
+                             {"2", "2: outlines grown"},
+                             {"3", "3: cleaned and smoothed"},
+                             {"4", "4: cells merged"}};
+  for (const auto& [key, label] : phases) {
+    html += "<tr>" + Cell(label) + NumCell(Number(area, key, 1e4, 1)) + "</tr>\n";
+  }
+  html += "</table>\n";
+  const json warnings = surface.value("warnings", json::array());
+  if (warnings.is_array() && !warnings.empty()) {
+    html += "<ul class=\"notes\">\n";
+    for (const json& warning : warnings) {
+      html += "<li>" +
+              EscapeHtml(warning.is_string() ? warning.get<std::string>() : warning.dump()) +
+              "</li>\n";
+    }
+    html += "</ul>\n";
+  }
+  return html;
+}
+
 std::string CalibrationSection(const ReportInputs& in) {
   if (!in.calibration) return "";
   const calibration::CalibrationResiduals& r = in.calibration->residuals;

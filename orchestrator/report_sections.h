@@ -14,6 +14,7 @@ std::string KeyFiguresSection(const ReportInputs& in);  // traits; ground-truth 
 std::string TimingsSection(const ReportInputs& in);     // per phase: table and bar chart
 std::string ViewsSection(const ReportInputs& in);       // every capture: phase, reason, kept
 std::string ClustersSection(const ReportInputs& in);    // traits per cluster
+std::string SurfaceSection(const ReportInputs& in);     // what the surfacer made, its warnings
 std::string CalibrationSection(const ReportInputs& in);
 std::string PlannerSection(const ReportInputs& in);
 std::string NotesSection(const ReportInputs& in);  // inputs left out

@@ -312,10 +312,23 @@ class ScanRun {
     report["planner"] = record_.options;
     report["build"] = nlohmann::json::parse(ReadFile(model_dir_ / "build.json"));
     report["traits"] = nlohmann::json::parse(ReadFile(model_dir_ / "traits.json"));
-    if (surface_) {  // how Phase 2 grew the cells, and what the surfacer warned of
+    if (surface_) {  // what the surfacer made of the clusters, and what it warned of
       const surface::SurfaceReport& made = surface_->report;
-      report["surface"] = {{"image_views", made.image_views},
+      report["surface"] = {{"clusters", made.clusters},
+                           {"points_used", made.used_points},
+                           {"points_left_out", made.points_left_out},
+                           {"cells", made.cells},
+                           {"cells_split_by_phase3", made.cell_islands},
+                           {"image_views", made.image_views},
                            {"grown_vertices", made.grown_vertices},
+                           {"stitch_faces", made.stitching.faces},
+                           {"area_m2_after_phase",
+                            {{"1", made.area_triangulated},
+                             {"2", made.area_grown},
+                             {"3", made.area_modified},
+                             {"4", made.area}}},
+                           {"faces", made.faces},
+                           {"components", made.components},
                            {"warnings", made.warnings}};
     }
     report["files"] = {"images/",          "cameras.json",       "colmap/",

@@ -70,6 +70,9 @@ void SurfacerNode::Publish(const SurfacerResult& result) {
                                result.mesh.faces.size(), result.report.components,
                                1e4 * result.traits.total_area);
     log::Info("{}", last_answer_);
+    for (const std::string& warning : result.report.warnings) {
+      log::Warn("surfacing '{}': {}", result.cloud_id, warning);
+    }
   } else {
     last_answer_ = fmt::format("'{}': {}", result.cloud_id, result.problem);
     log::Warn("no surface for {}", last_answer_);

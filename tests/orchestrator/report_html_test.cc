@@ -54,6 +54,13 @@ TEST(ReportHtml, ShowsTheScanItsFiguresViewsAndClusters) {
   EXPECT_NE(html.find("<td class=\"num\">30.50</td>"), std::string::npos);  // BUILD seconds
   EXPECT_NE(html.find("<li>patch 3 seen by 1 view</li>"), std::string::npos);
   EXPECT_NE(html.find("cameras (2)"), std::string::npos);
+  // The surfacer's account: counts, area after each phase, warnings.
+  EXPECT_NE(html.find("9 clusters of 2900 points (4 left out"), std::string::npos);
+  EXPECT_NE(html.find("77 stitch faces joined them into 2 connected pieces"), std::string::npos);
+  EXPECT_NE(html.find("<td>2: outlines grown</td><td class=\"num\">79.0</td>"), std::string::npos);
+  EXPECT_NE(
+      html.find("<li>cluster 7 (2 points): fewer than 3 points; its points are left out</li>"),
+      std::string::npos);
 }
 
 TEST(ReportHtml, IsSelfContained) {

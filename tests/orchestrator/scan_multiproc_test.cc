@@ -14,6 +14,7 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <utility>
@@ -96,6 +97,13 @@ void ExpectFinishedScan(const fs::path& scan_dir, const bench::CellProcesses& ce
     EXPECT_TRUE(fs::exists(scan_dir / file)) << file;
   }
   EXPECT_GT(fs::file_size(scan_dir / "model/mesh.ply"), 1000u);
+  // The report says what the surfacer made of the clusters.
+  const nlohmann::json report = nlohmann::json::parse(testing::ReadFile(scan_dir / "report.json"));
+  const nlohmann::json& surface = report.at("surface");
+  EXPECT_GE(surface.at("clusters").get<int>(), 3);
+  EXPECT_GE(surface.at("cells").get<int>(), surface.at("clusters").get<int>() / 2);
+  EXPECT_GE(surface.at("components").get<int>(), 1);
+  EXPECT_GT(surface.at("area_m2_after_phase").at("4").get<double>(), 0.001);
 }
 
 TEST(ScanMultiproc, PausedKilledAndResumedScanFinishesWithEveryImageOnce) {
