@@ -28,6 +28,17 @@ std::string Figure(const std::string& label, const std::string& value, const std
 std::string Cell(const std::string& text) { return "<td>" + EscapeHtml(text) + "</td>"; }
 std::string NumCell(const std::string& text) { return "<td class=\"num\">" + text + "</td>"; }
 
+// A list item per entry of a JSON array (strings as they are, anything else as JSON), opened
+// with `open` (a <ul> tag).
+std::string TextList(const json& items, const char* open) {
+  std::string html = std::string(open) + "\n";
+  for (const json& item : items) {
+    html +=
+        "<li>" + EscapeHtml(item.is_string() ? item.get<std::string>() : item.dump()) + "</li>\n";
+  }
+  return html + "</ul>\n";
+}
+
 // scan.json's creation time, in UTC so the page does not depend on where it is made.
 std::string Date(int64_t utime) {
   if (utime <= 0) return "unknown";
@@ -184,15 +195,7 @@ std::string SurfaceSection(const ReportInputs& in) {
   }
   html += "</table>\n";
   const json warnings = surface.value("warnings", json::array());
-  if (warnings.is_array() && !warnings.empty()) {
-    html += "<ul class=\"notes\">\n";
-    for (const json& warning : warnings) {
-      html += "<li>" +
-              EscapeHtml(warning.is_string() ? warning.get<std::string>() : warning.dump()) +
-              "</li>\n";
-    }
-    html += "</ul>\n";
-  }
+  if (warnings.is_array() && !warnings.empty()) html += TextList(warnings, "<ul class=\"notes\">");
   return html;
 }
 
@@ -224,12 +227,7 @@ std::string PlannerSection(const ReportInputs& in) {
                       Number(planner, "patches", 1, 0), Number(planner, "failing_patches", 1, 0));
   for (const char* key : {"planner_notes", "notes"}) {
     if (!planner.contains(key) || !planner[key].is_array()) continue;
-    html += "<ul>\n";
-    for (const json& note : planner[key]) {
-      html +=
-          "<li>" + EscapeHtml(note.is_string() ? note.get<std::string>() : note.dump()) + "</li>\n";
-    }
-    html += "</ul>\n";
+    html += TextList(planner[key], "<ul>");
   }
   return html;
 }

@@ -41,6 +41,26 @@ ScanState StateOfStage(planner::ActiveVisionStage stage) {
   throw std::logic_error("unknown active vision stage");
 }
 
+// What the surfacer made of the clusters (the report's "surface"), and what it warned of.
+nlohmann::ordered_json SurfaceSummary(const surface::SurfaceReport& made) {
+  return {{"clusters", made.clusters},
+          {"points_used", made.used_points},
+          {"points_left_out", made.points_left_out},
+          {"cells", made.cells},
+          {"cells_split_by_phase3", made.cell_islands},
+          {"image_views", made.image_views},
+          {"grown_vertices", made.grown_vertices},
+          {"stitch_faces", made.stitching.faces},
+          {"area_m2_after_phase",
+           {{"1", made.area_triangulated},
+            {"2", made.area_grown},
+            {"3", made.area_modified},
+            {"4", made.area}}},
+          {"faces", made.faces},
+          {"components", made.components},
+          {"warnings", made.warnings}};
+}
+
 // One run of the scan: the record, the machine and what the steps hand each other.
 class ScanRun {
  public:
@@ -312,25 +332,7 @@ class ScanRun {
     report["planner"] = record_.options;
     report["build"] = nlohmann::json::parse(ReadFile(model_dir_ / "build.json"));
     report["traits"] = nlohmann::json::parse(ReadFile(model_dir_ / "traits.json"));
-    if (surface_) {  // what the surfacer made of the clusters, and what it warned of
-      const surface::SurfaceReport& made = surface_->report;
-      report["surface"] = {{"clusters", made.clusters},
-                           {"points_used", made.used_points},
-                           {"points_left_out", made.points_left_out},
-                           {"cells", made.cells},
-                           {"cells_split_by_phase3", made.cell_islands},
-                           {"image_views", made.image_views},
-                           {"grown_vertices", made.grown_vertices},
-                           {"stitch_faces", made.stitching.faces},
-                           {"area_m2_after_phase",
-                            {{"1", made.area_triangulated},
-                             {"2", made.area_grown},
-                             {"3", made.area_modified},
-                             {"4", made.area}}},
-                           {"faces", made.faces},
-                           {"components", made.components},
-                           {"warnings", made.warnings}};
-    }
+    if (surface_) report["surface"] = SurfaceSummary(surface_->report);
     report["files"] = {"images/",          "cameras.json",       "colmap/",
                        kCalibrationName,   "model/ppr.bt",       "model/points.ply",
                        "model/merged.ply", "model/clusters.ply", "model/mesh.ply",
