@@ -251,7 +251,10 @@ ImageGrowthStats GrowCellWithImages(Cell& cell, const std::vector<Eigen::Vector3
     lifted.push_back(vertex.cast<double>());
   }
   for (size_t node : new_nodes) {
-    flat.push_back(grid.Centre(node));
+    // Where the lift put the node, not its grid centre: the fitted surface moves a node along
+    // its local normal, so within the plane too, and neighbours that crossed over each other
+    // made faces folded back on the leaf (tests/surface/image_growth_test.cc).
+    flat.push_back(cell.plane.Project(judge.Lifted(node).cast<float>()));
     lifted.push_back(judge.Lifted(node));
   }
   std::set<std::array<int, 3>> old_faces;
