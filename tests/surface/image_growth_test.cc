@@ -133,6 +133,56 @@ TEST(ImageGrowth, FacesGrownOverACurvingSheetDoNotFoldBack) {
   }
 }
 
+// The faces grown beyond the sampled part of a sheet of an 80 mm cylinder about the y axis
+// (|angle| < sampled_angle / 2, |y| < sampled_length / 2): area-weighted RMS distance to the
+// cylinder and mean angle between face and cylinder normals.
+struct GrownPartError {
+  double rms = 0;        // m
+  double mean_tilt = 0;  // radians
+};
+GrownPartError GrownPartOfCylinder(const geometry::Mesh& mesh, double radius, double sampled_angle,
+                                   double sampled_length) {
+  double area = 0.0, squared = 0.0, tilt = 0.0;
+  for (const Eigen::Vector3i& face : mesh.faces) {
+    const Eigen::Vector3d a = mesh.vertices[face[0]].cast<double>(),
+                          b = mesh.vertices[face[1]].cast<double>(),
+                          c = mesh.vertices[face[2]].cast<double>();
+    const Eigen::Vector3d centre = (a + b + c) / 3.0;
+    const Eigen::Vector3d outwards = Eigen::Vector3d(centre.x(), 0.0, centre.z()).normalized();
+    if (std::abs(std::atan2(centre.x(), centre.z())) < sampled_angle / 2 &&
+        std::abs(centre.y()) < sampled_length / 2) {
+      continue;
+    }
+    const Eigen::Vector3d cross = (b - a).cross(c - a);
+    const double face_area = 0.5 * cross.norm();
+    const double off = std::hypot(centre.x(), centre.z()) - radius;
+    area += face_area;
+    squared += face_area * off * off;
+    tilt += face_area * std::acos(std::clamp(cross.normalized().dot(outwards), -1.0, 1.0));
+  }
+  return {std::sqrt(squared / area), tilt / area};
+}
+
+// Nodes far beyond the points are lifted onto a quadric fitted round them; when the fit could
+// widen only to the growth limit, a node near it saw a strip of points along the edge, whose
+// quadric tilts at random with their noise: the grown faces stood 35 degrees off the sheet on
+// average and 1.8 mm RMS from it (0.2 mm noise), now 13 degrees and 0.7 mm.
+TEST(ImageGrowth, TheGrownPartFollowsACurvedSheetThroughNoise) {
+  constexpr double kRadius = 0.08, kAngle = 0.6, kLength = 0.05;
+  ClusteredPoints points = test::CylinderSheet(kRadius, kAngle, kLength, 400, 7);
+  std::mt19937_64 rng(3);
+  for (Eigen::Vector3f& p : points.cloud.positions) {
+    for (int axis = 0; axis < 3; ++axis) p[axis] += 0.0002 * test::Gaussian(rng);
+  }
+  SurfaceImages images = ViewsOfDisc(kLeafRadius);
+  for (EvidenceView& view : images.views) view.mask.setTo(255);  // the front runs to its limit
+  const SurfaceResult result = ReconstructSurface(points, {}, &images);
+  const GrownPartError error = GrownPartOfCylinder(result.mesh, kRadius, kAngle, kLength);
+  EXPECT_GT(geometry::SurfaceArea(result.mesh), 2.0 * kRadius * kAngle * kLength);  // grown
+  EXPECT_LT(error.rms, 0.001);
+  EXPECT_LT(error.mean_tilt, 18.0 * std::numbers::pi / 180.0);
+}
+
 TEST(ImageGrowth, GrowthIsLimitedToMaxGrowthSpacings) {
   const ClusteredPoints points = test::SpiralDisc(kSampledRadius, kPoints);
   const SurfaceImages images = ViewsOfDisc(kLeafRadius);
