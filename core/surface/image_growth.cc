@@ -210,6 +210,13 @@ std::vector<size_t> NewVertexNodes(const PlaneGrid& grid, const Cell& cell,
 
 }  // namespace
 
+FittedSurfaceOptions GrownPartFit(const FittedSurfaceOptions& fit,
+                                  const ImageGrowthOptions& options) {
+  FittedSurfaceOptions grown = fit;
+  grown.max_radius_factor = options.max_growth_factor + fit.max_radius_factor;
+  return grown;
+}
+
 ImageGrowthStats GrowCellWithImages(Cell& cell, const std::vector<Eigen::Vector3f>& samples,
                                     const ImageEvidence& evidence,
                                     const ClaimedElsewhere& claimed_elsewhere, double spacing,
@@ -225,15 +232,7 @@ ImageGrowthStats GrowCellWithImages(Cell& cell, const std::vector<Eigen::Vector3
   for (int32_t source : cell.source_points) {
     if (source >= 0) own_samples.push_back(samples[source]);
   }
-  // The fit may widen as far as the front may go and an ordinary neighbourhood beyond, so that
-  // a node beyond the samples' usual neighbourhood still bends with a patch of the nearest part
-  // of the leaf instead of carrying its height out flat (`avc bench surface --scans`,
-  // broadleaf: widening to 8 spacings rather than 4 took the leaf samples more than 2 mm off the
-  // truth from 35 to 28 cm^2). Capped at the growth limit alone, a node near it saw only a strip
-  // along the samples' edge, whose quadric tilts at random: on a noisy cylinder the grown faces
-  // stood 35 degrees off the surface on average, 13 with the patch (image_growth_test.cc).
-  FittedSurfaceOptions growth_fit = fit;
-  growth_fit.max_radius_factor = options.max_growth_factor + fit.max_radius_factor;
+  const FittedSurfaceOptions growth_fit = GrownPartFit(fit, options);
   const FittedSurface surface(std::move(own_samples), cell.plane.normal, spacing, growth_fit);
   const std::optional<ColourModel> colour =
       options.colour_agreement ? CellColourModel(cell, options.colour) : std::nullopt;

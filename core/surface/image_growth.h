@@ -41,6 +41,18 @@ struct ImageGrowthStats {
 // True when a point belongs to another cell's surface rather than this one's.
 using ClaimedElsewhere = std::function<bool(const Eigen::Vector3d&)>;
 
+// The fitted surface for the parts Phase 2 grew (the growth and Phase 3's refinement of a cell
+// grown with images): its neighbourhood may widen as far as the front may go and an ordinary
+// neighbourhood beyond, so a vertex far beyond the samples still bends with a patch of the
+// nearest part of the leaf. Capped at the ordinary 4 spacings, a vertex out there kept the
+// height carried out flat (`avc bench surface --scans`, broadleaf: widening to 8 spacings took
+// the leaf area more than 2 mm off the truth from 35 to 28 cm^2); capped at the growth limit, a
+// vertex near it saw only a strip of samples along the cell's edge, whose quadric tilts at random
+// with their noise (a noisy cylinder's grown faces: 35 degrees off the surface on average, 13
+// with the patch; image_growth_test.cc). Inside the samples the doubling stops long before.
+FittedSurfaceOptions GrownPartFit(const FittedSurfaceOptions& fit,
+                                  const ImageGrowthOptions& options);
+
 // samples: the input positions cell.source_points index. spacing, alpha: Phase 1's (m).
 ImageGrowthStats GrowCellWithImages(Cell& cell, const std::vector<Eigen::Vector3f>& samples,
                                     const ImageEvidence& evidence,

@@ -232,8 +232,13 @@ SurfaceResult ReconstructSurface(const ClusteredPoints& input, const SurfaceOpti
   std::vector<Cell> cells = TriangulateClusters(input, members, thresholds, &usable, &report);
   report.area_triangulated = total_area(cells);
   const bool images_asked = images != nullptr && options.image_growth.enabled;
+  // Phase 3 refines what Phase 2 grew with the fit that grew it: with the ordinary one, vertices
+  // 2-4 spacings beyond the samples were pulled back onto a strip's tilted quadric (a noisy
+  // cylinder: 169 faces turned over, none with it; image_growth_test.cc).
+  FittedSurfaceOptions refine_fit = options.fit;
   if (options.grow_boundary && images_asked && !images->views.empty()) {
     GrowCellsWithImages(cells, input, usable, *images, options, thresholds, &report);
+    refine_fit = GrownPartFit(options.fit, options.image_growth);
   } else if (options.grow_boundary) {
     if (images_asked) {
       report.warnings.push_back(
@@ -247,8 +252,8 @@ SurfaceResult ReconstructSurface(const ClusteredPoints& input, const SurfaceOpti
     report.modifications += ModifyCellMesh(cell.mesh, options, thresholds);
     cell.source_points.resize(cell.mesh.vertices.size(), -1);
     if (options.refine) {
-      report.refinement += RefineCell(cell, input.cloud.positions, spacing,
-                                      options.refine_subdivisions, options.fit);
+      report.refinement +=
+          RefineCell(cell, input.cloud.positions, spacing, options.refine_subdivisions, refine_fit);
     }
   }
   report.area_modified = total_area(cells);

@@ -163,10 +163,12 @@ GrownPartError GrownPartOfCylinder(const geometry::Mesh& mesh, double radius, do
   return {std::sqrt(squared / area), tilt / area};
 }
 
-// Nodes far beyond the points are lifted onto a quadric fitted round them; when the fit could
-// widen only to the growth limit, a node near it saw a strip of points along the edge, whose
-// quadric tilts at random with their noise: the grown faces stood 35 degrees off the sheet on
-// average and 1.8 mm RMS from it (0.2 mm noise), now 13 degrees and 0.7 mm.
+// Grown nodes are lifted onto a quadric fitted round them, and Phase 3 refines them the same
+// way. When the fit could widen only to the growth limit (or, in the refinement, to the
+// ordinary 4 spacings), a vertex near it saw a strip of points along the edge, whose quadric
+// tilts at random with their noise: the grown faces stood 35 degrees off the sheet on average
+// and 1.8 mm RMS from it (0.2 mm noise); with the growth's fit widened 13 degrees, 0.7 mm and
+// 169 faces turned over by the refinement; with both, 9 degrees, 0.66 mm and none.
 TEST(ImageGrowth, TheGrownPartFollowsACurvedSheetThroughNoise) {
   constexpr double kRadius = 0.08, kAngle = 0.6, kLength = 0.05;
   ClusteredPoints points = test::CylinderSheet(kRadius, kAngle, kLength, 400, 7);
@@ -180,7 +182,8 @@ TEST(ImageGrowth, TheGrownPartFollowsACurvedSheetThroughNoise) {
   const GrownPartError error = GrownPartOfCylinder(result.mesh, kRadius, kAngle, kLength);
   EXPECT_GT(geometry::SurfaceArea(result.mesh), 2.0 * kRadius * kAngle * kLength);  // grown
   EXPECT_LT(error.rms, 0.001);
-  EXPECT_LT(error.mean_tilt, 18.0 * std::numbers::pi / 180.0);
+  EXPECT_LT(error.mean_tilt, 11.0 * std::numbers::pi / 180.0);
+  EXPECT_LE(DownwardFaces(result.mesh), 5u);
 }
 
 TEST(ImageGrowth, GrowthIsLimitedToMaxGrowthSpacings) {
