@@ -232,8 +232,8 @@ ImageGrowthStats GrowCellWithImages(Cell& cell, const std::vector<Eigen::Vector3
   for (int32_t source : cell.source_points) {
     if (source >= 0) own_samples.push_back(samples[source]);
   }
-  const FittedSurfaceOptions growth_fit = GrownPartFit(fit, options);
-  const FittedSurface surface(std::move(own_samples), cell.plane.normal, spacing, growth_fit);
+  const FittedSurface surface(std::move(own_samples), cell.plane.normal, spacing,
+                              GrownPartFit(fit, options));
   const std::optional<ColourModel> colour =
       options.colour_agreement ? CellColourModel(cell, options.colour) : std::nullopt;
   NodeJudge judge(grid, surface, evidence, colour ? &*colour : nullptr, claimed_elsewhere, &stats);

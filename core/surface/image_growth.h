@@ -48,7 +48,7 @@ using ClaimedElsewhere = std::function<bool(const Eigen::Vector3d&)>;
 // height carried out flat (`avc bench surface --scans`, broadleaf: widening to 8 spacings took
 // the leaf area more than 2 mm off the truth from 35 to 28 cm^2); capped at the growth limit, a
 // vertex near it saw only a strip of samples along the cell's edge, whose quadric tilts at random
-// with their noise (a noisy cylinder's grown faces: 35 degrees off the surface on average, 13
+// with their noise (a noisy cylinder's grown faces: 39 degrees off the surface on average, 9
 // with the patch; image_growth_test.cc). Inside the samples the doubling stops long before.
 FittedSurfaceOptions GrownPartFit(const FittedSurfaceOptions& fit,
                                   const ImageGrowthOptions& options);

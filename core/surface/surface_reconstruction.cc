@@ -234,7 +234,7 @@ SurfaceResult ReconstructSurface(const ClusteredPoints& input, const SurfaceOpti
   const bool images_asked = images != nullptr && options.image_growth.enabled;
   // Phase 3 refines what Phase 2 grew with the fit that grew it: with the ordinary one, vertices
   // 2-4 spacings beyond the samples were pulled back onto a strip's tilted quadric (a noisy
-  // cylinder: 169 faces turned over, none with it; image_growth_test.cc).
+  // cylinder: 112 faces turned over, none with it; image_growth_test.cc).
   FittedSurfaceOptions refine_fit = options.fit;
   if (options.grow_boundary && images_asked && !images->views.empty()) {
     GrowCellsWithImages(cells, input, usable, *images, options, thresholds, &report);

@@ -58,15 +58,19 @@ inline ClusteredPoints RandomDisc(double radius, int n, uint64_t seed) {
 }
 
 // n points uniformly at random on a section of a cylinder of radius r about the y axis,
-// spanning angle (radians) round it and height along it, normals pointing outwards.
-inline ClusteredPoints CylinderSheet(double r, double angle, double height, int n, uint64_t seed) {
+// spanning angle (radians) round it and height along it, normals pointing outwards (the true
+// ones); positions off the cylinder by noise (m) per axis.
+inline ClusteredPoints CylinderSheet(double r, double angle, double height, int n, uint64_t seed,
+                                     double noise = 0.0) {
   ClusteredPoints set;
   std::mt19937_64 rng(seed);
   for (int i = 0; i < n; ++i) {
     const double phi = (Uniform(rng) - 0.5) * angle;
     const double y = (Uniform(rng) - 0.5) * height;
     const Eigen::Vector3d normal(std::sin(phi), 0.0, std::cos(phi));
-    AddPoint(set, r * normal + Eigen::Vector3d(0.0, y, 0.0), normal, 0);
+    Eigen::Vector3d p = r * normal + Eigen::Vector3d(0.0, y, 0.0);
+    if (noise > 0.0) p += noise * Eigen::Vector3d(Gaussian(rng), Gaussian(rng), Gaussian(rng));
+    AddPoint(set, p, normal, 0);
   }
   return set;
 }
