@@ -27,12 +27,12 @@ void PrintPlant(const NbvCase& nbv_case, const IsolatedResult& run) {
   const nlohmann::json& r = run.result;
   std::cout << fmt::format(" ({} ground-truth samples, {} renders, peak {:.0f} MB)\n",
                            r["samples"].get<size_t>(), r["renders"].get<int>(), run.peak_memory_mb);
-  std::cout << fmt::format("{:<28} {:>7} {:>9} {:>9} {:>9} {:>9} {:>8} {:>8} {:>8} {:>8}\n",
+  std::cout << fmt::format("{:<38} {:>7} {:>9} {:>9} {:>9} {:>9} {:>8} {:>8} {:>8} {:>8}\n",
                            "method", "images", "coverage", "after 10", "after 20", "after 30",
                            "to 90%", "points", "pts/img", "mean mm");
   for (const nlohmann::json& m : r["methods"]) {
     std::cout << fmt::format(
-        "{:<28} {:>7} {:>9} {:>9} {:>9} {:>9} {:>8} {:>8} {:>8} {:>8}\n",
+        "{:<38} {:>7} {:>9} {:>9} {:>9} {:>9} {:>8} {:>8} {:>8} {:>8}\n",
         m["method"].get<std::string>(), m["images"].get<size_t>(), Percent(m, "coverage"),
         Percent(m, "after_10"), Percent(m, "after_20"), Percent(m, "after_30"),
         m.contains("images_to_90") ? std::to_string(m["images_to_90"].get<int>()) : "-",
@@ -69,6 +69,9 @@ int RunNbvBenchmark(const std::vector<std::string>& arguments) {
   uint64_t seed = 1;
   bool json = false;
   bool build = false;
+  int capture_budget = planner::ActiveVisionOptions{}.max_views;
+  double prune_face_loss = planner::ActiveVisionOptions{}.prune_max_covered_faces_lost;
+  std::vector<double> elevations;
   CLI::App app{
       "avc bench nbv: the planner's active vision (Algorithm 1: framing, the 3x10 orbit,\n"
       "view-sphere search for badly seen proxy patches, redundant-view removal) in the\n"
@@ -85,6 +88,19 @@ int RunNbvBenchmark(const std::vector<std::string>& arguments) {
   app.add_option("--views", baseline_views, "images of each baseline")
       ->capture_default_str()
       ->check(CLI::Range(3, 200));
+  app.add_option("--capture-budget", capture_budget,
+                 "captures the planner may take before removing redundant ones")
+      ->capture_default_str()
+      ->check(CLI::Range(30, 200));
+  app.add_option("--prune-face-loss", prune_face_loss,
+                 "fraction of the proxy faces covered by all captures that Phase 3 may leave "
+                 "under 3 views (1: the paper's rule alone)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  app.add_option("--elevations", elevations, "Phase 1's three heights, degrees")
+      ->delimiter(',')
+      ->expected(3)
+      ->check(CLI::Range(0.0, 89.0));
   app.add_option("--seed", seed, "coverage sampling and random-view seed")->capture_default_str();
   app.add_flag("--build", build,
                "also run the builder (patch MVS) on every view set but the ceiling and score its "
@@ -94,11 +110,20 @@ int RunNbvBenchmark(const std::vector<std::string>& arguments) {
 
   std::vector<NbvCase> cases;
   for (const std::string& preset : presets) {
-    if (!preset.empty()) cases.push_back({preset, {}, scale, baseline_views, seed, build});
+    if (!preset.empty())
+      cases.push_back({preset,
+                       {},
+                       scale,
+                       baseline_views,
+                       seed,
+                       build,
+                       capture_budget,
+                       prune_face_loss,
+                       elevations});
   }
   for (const std::string& mesh : meshes) {
-    cases.push_back(
-        {std::filesystem::path(mesh).stem().string(), mesh, scale, baseline_views, seed, build});
+    cases.push_back({std::filesystem::path(mesh).stem().string(), mesh, scale, baseline_views, seed,
+                     build, capture_budget, prune_face_loss, elevations});
   }
   nlohmann::json report = {{"benchmark", "nbv"}, {"plants", nlohmann::json::array()}};
   bool failed = false;

@@ -65,7 +65,8 @@ nlohmann::json MethodJson(const std::string& name, const eval::CoverageModel& mo
 // The sphere's views a planner that knew the ground truth would take (eval/coverage_oracle.h):
 // the coverage n views of the sphere allow, for n = each count in `counts`.
 std::vector<nlohmann::json> OracleJson(const std::vector<std::vector<uint8_t>>& sphere_seen,
-                                       int min_views, const std::vector<int>& counts) {
+                                       int min_views, const std::vector<int>& counts,
+                                       const std::string& label) {
   const int most = *std::max_element(counts.begin(), counts.end());
   const eval::OracleSelection oracle = eval::GreedyCoverageSelection(sphere_seen, min_views, most);
   std::vector<nlohmann::json> methods;
@@ -74,7 +75,7 @@ std::vector<nlohmann::json> OracleJson(const std::vector<std::vector<uint8_t>>& 
     std::vector<double> curve(
         oracle.coverage.begin(),
         oracle.coverage.begin() + std::min<size_t>(n, oracle.coverage.size()));
-    methods.push_back(CurveJson(fmt::format("ground-truth greedy ({})", n), curve));
+    methods.push_back(CurveJson(fmt::format("ground-truth greedy{} ({})", label, n), curve));
   }
   return methods;
 }
@@ -109,8 +110,12 @@ nlohmann::json RunNbvCase(const NbvCase& nbv_case) {
   };
 
   SimulatedCapture capture(scene, nbv_case.render_scale);
-  const planner::ActiveVisionResult ours =
-      planner::RunActiveVision(cell, [&](const planner::CellView& view) { return capture(view); });
+  planner::ActiveVisionOptions planner_options;
+  planner_options.max_views = nbv_case.capture_budget;
+  planner_options.prune_max_covered_faces_lost = nbv_case.prune_face_loss;
+  if (!nbv_case.elevations_deg.empty()) planner_options.elevations_deg = nbv_case.elevations_deg;
+  const planner::ActiveVisionResult ours = planner::RunActiveVision(
+      cell, [&](const planner::CellView& view) { return capture(view); }, planner_options);
 
   std::vector<camera::Camera> kept, initial, captured;
   for (const planner::PlannedView& v : ours.views) {
@@ -159,8 +164,27 @@ nlohmann::json RunNbvCase(const NbvCase& nbv_case) {
   const int min_views = model.options().min_views;
   methods.push_back(CurveJson(fmt::format("all sphere views ({}, ceiling)", sphere.size()),
                               CoverageCurve(sphere_seen, model.samples().size(), min_views)));
+  // At our count, at 10 % fewer than the baselines' (the acceptance's fewest savings) and at
+  // theirs.
+  std::vector<int> oracle_counts = {static_cast<int>(kept.size()), n - n / 10, n};
+  std::sort(oracle_counts.begin(), oracle_counts.end());
+  oracle_counts.erase(std::unique(oracle_counts.begin(), oracle_counts.end()), oracle_counts.end());
+  for (nlohmann::json& oracle : OracleJson(sphere_seen, min_views, oracle_counts, "")) {
+    methods.push_back(std::move(oracle));
+  }
+  // The same on spheres at 0.6 and 0.8 of the distance as well: a closer camera reaches higher
+  // elevations and sees a patch from nearer, as the planner's Phase 2 views do.
+  std::vector<std::vector<uint8_t>> shells_seen = sphere_seen;
+  for (const double factor : {0.6, 0.8}) {
+    planner::BaselineFrame closer = frame;
+    closer.distance *= factor;
+    for (std::vector<uint8_t>& seen :
+         SeenByEach(model, Cameras(planner::SphereViews(cell, closer, dense_elevations, 24)))) {
+      shells_seen.push_back(std::move(seen));
+    }
+  }
   for (nlohmann::json& oracle :
-       OracleJson(sphere_seen, min_views, {static_cast<int>(kept.size()), n})) {
+       OracleJson(shells_seen, min_views, oracle_counts, ", 3 distances")) {
     methods.push_back(std::move(oracle));
   }
   // At our image count, on the proxy box our run found.

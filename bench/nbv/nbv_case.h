@@ -8,6 +8,9 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
+
+#include "services/planner/active_vision.h"
 
 namespace avc::bench {
 
@@ -19,6 +22,11 @@ struct NbvCase {
   uint64_t seed = 1;
   // Also run the builder on every view set but the ceiling (the paper's Table 1).
   bool build = false;
+  // Captures the planner may take (Phase 1 and 2) before Phase 3 removes redundant ones.
+  int capture_budget = planner::ActiveVisionOptions{}.max_views;
+  // Phase 3's limit on the covered proxy faces lost (ActiveVisionOptions).
+  double prune_face_loss = planner::ActiveVisionOptions{}.prune_max_covered_faces_lost;
+  std::vector<double> elevations_deg;  // Phase 1's heights; empty: the planner's
 };
 
 // Figures: per method (ours, orbit 3x10, one static, two static, random, the sphere ceiling, the

@@ -235,8 +235,9 @@ struct Run {
     }
     std::vector<bool> keep(seen.size(), true);
     if (options.remove_redundant) {
-      keep =
-          KeepNonRedundant(seen, options.visibility, {}, options.prune_holds_failing_scores, faces);
+      const PruneRule rule{options.prune_holds_failing_scores,
+                           options.prune_max_covered_faces_lost};
+      keep = KeepNonRedundant(seen, options.visibility, {}, rule, faces);
     }
     PatchViewCounts counts;
     for (size_t v = 0; v < seen.size(); ++v) {

@@ -64,6 +64,9 @@ struct ActiveVisionOptions {
   // images / 89.3 % coverage (33 / 89.0 % by patches), strap 24 / 97.6 % (97.5 %), maize 23 /
   // 90.6 % (90.3 %), broadleaf and bushy unchanged.
   bool prune_order_by_faces = true;
+  // With prune_order_by_faces: the fraction of the faces covered with all images that Phase 3
+  // may leave with fewer than min_views views (1: the paper's rule alone).
+  double prune_max_covered_faces_lost = 1.0;
   ppr::ProxyOptions proxy;
   PatchOptions patches;
   VisibilityOptions visibility;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
@@ -25,12 +26,16 @@ bool ScoresHold(const PatchViewCounts& counts, const std::vector<double>& floor,
   return true;
 }
 
+size_t CoveredCount(const PatchViewCounts& counts, int min_views) {
+  return static_cast<size_t>(
+      std::count_if(counts.begin(), counts.end(), [&](int c) { return c >= min_views; }));
+}
+
 }  // namespace
 
 std::vector<bool> KeepNonRedundant(const std::vector<PatchesSeen>& seen,
                                    const VisibilityOptions& options,
-                                   const std::vector<bool>& protected_views,
-                                   bool hold_failing_scores,
+                                   const std::vector<bool>& protected_views, const PruneRule& rule,
                                    const std::vector<PatchesSeen>& faces_seen) {
   std::vector<bool> keep(seen.size(), true);
   if (seen.empty()) return keep;
@@ -46,7 +51,14 @@ std::vector<bool> KeepNonRedundant(const std::vector<PatchesSeen>& seen,
   PatchViewCounts counts;
   for (const PatchesSeen& view : seen) AddView(view, &counts);
   std::vector<double> floor = PatchScores(counts, options);
-  for (double& score : floor) score = score >= 1.0 ? 1.0 : (hold_failing_scores ? score : 0.0);
+  for (double& score : floor) score = score >= 1.0 ? 1.0 : (rule.hold_failing_scores ? score : 0.0);
+  // The fewest faces that must stay covered (only when usefulness is counted on faces).
+  const size_t covered_floor =
+      faces_seen.empty()
+          ? 0
+          : static_cast<size_t>(
+                std::ceil((1.0 - rule.max_covered_faces_lost) *
+                          static_cast<double>(CoveredCount(useful_counts, options.min_views))));
 
   std::vector<bool> tried(seen.size(), false);
   while (true) {
@@ -64,12 +76,14 @@ std::vector<bool> KeepNonRedundant(const std::vector<PatchesSeen>& seen,
     if (best == seen.size()) break;
     tried[best] = true;
     RemoveView(seen[best], &counts);
+    RemoveView(useful[best], &useful_counts);
     // A view that cannot go now never can: later removals only lower the counts.
-    if (ScoresHold(counts, floor, options)) {
+    if (ScoresHold(counts, floor, options) &&
+        CoveredCount(useful_counts, options.min_views) >= covered_floor) {
       keep[best] = false;
-      RemoveView(useful[best], &useful_counts);
     } else {
       AddView(seen[best], &counts);
+      AddView(useful[best], &useful_counts);
     }
   }
   return keep;

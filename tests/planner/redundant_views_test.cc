@@ -32,7 +32,7 @@ TEST(KeepNonRedundant, APatchBelowTheTargetHoldsItsViewsOnlyWhenAsked) {
   const std::vector<bool> keep = KeepNonRedundant(seen, options);
   EXPECT_EQ(keep, (std::vector<bool>{true, true, true, false}));
   // Holding failing scores: views 1 and 2 must stay, and again one view of patch 0 goes.
-  const std::vector<bool> held = KeepNonRedundant(seen, options, {}, true);
+  const std::vector<bool> held = KeepNonRedundant(seen, options, {}, {.hold_failing_scores = true});
   EXPECT_TRUE(held[1]);
   EXPECT_TRUE(held[2]);
   EXPECT_EQ(std::count(held.begin(), held.end(), false), 1);
@@ -51,7 +51,7 @@ TEST(KeepNonRedundant, AFailingPatchDoesNotHoldViewsAPassingOneNeeds) {
   const std::vector<bool> keep = KeepNonRedundant(seen, options);
   EXPECT_FALSE(keep[2]);
   EXPECT_EQ(std::count(keep.begin(), keep.end(), true), 2);
-  const std::vector<bool> held = KeepNonRedundant(seen, options, {}, true);
+  const std::vector<bool> held = KeepNonRedundant(seen, options, {}, {.hold_failing_scores = true});
   EXPECT_TRUE(held[2]);
   EXPECT_EQ(std::count(held.begin(), held.end(), true), 3);
 }
@@ -67,9 +67,25 @@ TEST(KeepNonRedundant, FacesDecideWhichViewIsLeastUseful) {
   const std::vector<PatchesSeen> seen = {{1}, {1}, {1}};
   const std::vector<PatchesSeen> faces = {{1, 1, 0, 0}, {1, 1, 1, 1}, {0, 1, 1, 1}};
   EXPECT_EQ(KeepNonRedundant(seen, options), (std::vector<bool>{true, true, false}));
-  EXPECT_EQ(KeepNonRedundant(seen, options, {}, false, faces),
+  EXPECT_EQ(KeepNonRedundant(seen, options, {}, {}, faces), (std::vector<bool>{false, true, true}));
+  EXPECT_THROW(KeepNonRedundant(seen, options, {}, {}, {{1}}), std::invalid_argument);
+}
+
+TEST(KeepNonRedundant, ARuleOnFacesKeepsTheirCoverage) {
+  VisibilityOptions options;
+  options.min_views = 2;
+  // The views of the test above: with all three, the four faces are seen by 2, 3, 2 and 2 views.
+  // Removing view 0 leaves face 0 with one (a quarter of the covered faces lost); removing view
+  // 1 or 2 leaves faces 2 and 3 with one.
+  const std::vector<PatchesSeen> seen = {{1}, {1}, {1}};
+  const std::vector<PatchesSeen> faces = {{1, 1, 0, 0}, {1, 1, 1, 1}, {0, 1, 1, 1}};
+  EXPECT_EQ(KeepNonRedundant(seen, options, {}, {.max_covered_faces_lost = 0.2}, faces),
+            (std::vector<bool>{true, true, true}));
+  EXPECT_EQ(KeepNonRedundant(seen, options, {}, {.max_covered_faces_lost = 0.25}, faces),
             (std::vector<bool>{false, true, true}));
-  EXPECT_THROW(KeepNonRedundant(seen, options, {}, false, {{1}}), std::invalid_argument);
+  // Without faces the limit has nothing to count: the patch rule alone decides.
+  EXPECT_EQ(KeepNonRedundant(seen, options, {}, {.max_covered_faces_lost = 0}),
+            (std::vector<bool>{true, true, false}));
 }
 
 }  // namespace
