@@ -30,7 +30,8 @@ struct NbvCase {
 };
 
 // Figures: per method (ours, orbit 3x10, one static, two static, random, the sphere ceiling, the
-// sphere's views chosen greedily on the ground truth at our image count and at baseline_views,
+// sphere's views chosen greedily on the ground truth at our image count, at 10 % fewer than
+// baseline_views and at baseline_views, the same over spheres at 0.6, 0.8 and 1 times the distance,
 // information gain at our image count) the images, coverage,
 // coverage after 10/20/30 images and images to 90 %; ours also captured, planning seconds per
 // next-best-view iteration (median, max), patches, failing patches and notes; with `build`, each

@@ -44,6 +44,11 @@ std::vector<bool> KeepNonRedundant(const std::vector<PatchesSeen>& seen,
         fmt::format("redundant views: faces seen by {} views, patches seen by {}",
                     faces_seen.size(), seen.size()));
   }
+  if (!(rule.max_covered_faces_lost >= 0 && rule.max_covered_faces_lost <= 1)) {
+    throw std::invalid_argument(
+        fmt::format("redundant views: max_covered_faces_lost {} is not a fraction in [0, 1]",
+                    rule.max_covered_faces_lost));
+  }
   // Usefulness is counted on the faces when given, else on the patches.
   const std::vector<PatchesSeen>& useful = faces_seen.empty() ? seen : faces_seen;
   PatchViewCounts useful_counts;

@@ -28,7 +28,8 @@ struct PruneRule {
 };
 
 // Per view: true to keep. `protected_views` (e.g. Phase 1's) are never removed when given.
-// Throws std::invalid_argument for faces_seen of another length than seen.
+// Throws std::invalid_argument for faces_seen of another length than seen, or a fraction
+// outside [0, 1].
 std::vector<bool> KeepNonRedundant(const std::vector<PatchesSeen>& seen,
                                    const VisibilityOptions& options,
                                    const std::vector<bool>& protected_views = {},

@@ -83,6 +83,8 @@ TEST(KeepNonRedundant, ARuleOnFacesKeepsTheirCoverage) {
             (std::vector<bool>{true, true, true}));
   EXPECT_EQ(KeepNonRedundant(seen, options, {}, {.max_covered_faces_lost = 0.25}, faces),
             (std::vector<bool>{false, true, true}));
+  EXPECT_THROW(KeepNonRedundant(seen, options, {}, {.max_covered_faces_lost = 1.5}, faces),
+               std::invalid_argument);
   // Without faces the limit has nothing to count: the patch rule alone decides.
   EXPECT_EQ(KeepNonRedundant(seen, options, {}, {.max_covered_faces_lost = 0}),
             (std::vector<bool>{true, true, false}));
