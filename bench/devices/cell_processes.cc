@@ -34,7 +34,10 @@ std::string LogTail(const fs::path& log, int lines) {
 namespace {
 
 bool CanListenOn(int port) {
-  const int fd = socket(AF_INET, SOCK_STREAM, 0);
+  // Close-on-exec: cells start their processes from several threads at once, and a probe socket
+  // inherited by another thread's child stays bound in it, so the cell given that port could not
+  // listen on it ("Address already in use", multiproc/chaos once in CI).
+  const int fd = socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
   if (fd < 0) throw std::runtime_error("cannot create a socket to find a free port");
   sockaddr_in address{};
   address.sin_family = AF_INET;

@@ -51,7 +51,7 @@ TcpStream TcpStream::Connect(const std::string& host, uint16_t port, Millisecond
   if (resolved != 0 || found == nullptr) {
     throw ConnectionError(fmt::format("{}: cannot resolve host: {}", peer, gai_strerror(resolved)));
   }
-  const int fd = socket(found->ai_family, found->ai_socktype, found->ai_protocol);
+  const int fd = socket(found->ai_family, found->ai_socktype | SOCK_CLOEXEC, found->ai_protocol);
   if (fd < 0) {
     freeaddrinfo(found);
     throw ConnectionError(fmt::format("{}: socket(): {}", peer, std::strerror(errno)));
@@ -139,7 +139,7 @@ size_t TcpStream::ReceiveSome(uint8_t* buffer, size_t capacity, Milliseconds tim
 }
 
 TcpListener::TcpListener(const std::string& host, uint16_t port) {
-  fd_ = socket(AF_INET, SOCK_STREAM, 0);
+  fd_ = socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
   if (fd_ < 0) throw ConnectionError(fmt::format("listen socket: {}", std::strerror(errno)));
   const int one = 1;
   setsockopt(fd_, SOL_SOCKET, SO_REUSEADDR, &one, sizeof(one));
@@ -169,7 +169,7 @@ TcpListener::~TcpListener() {
 TcpStream TcpListener::Accept() {
   sockaddr_in address{};
   socklen_t length = sizeof(address);
-  const int fd = ::accept(fd_, reinterpret_cast<sockaddr*>(&address), &length);
+  const int fd = ::accept4(fd_, reinterpret_cast<sockaddr*>(&address), &length, SOCK_CLOEXEC);
   if (fd < 0) return {};
   SetNonBlocking(fd);
   const int one = 1;
