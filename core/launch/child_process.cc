@@ -5,10 +5,12 @@
 #include <signal.h>
 #include <string.h>
 #include <sys/prctl.h>
+#include <sys/resource.h>
 #include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <stdexcept>
@@ -53,6 +55,19 @@ int OpenOrThrow(const std::string& program, const std::string& path, int flags, 
   return fd;
 }
 
+// A descriptor another thread opened without O_CLOEXEC (a library's socket, a bound port) must
+// not live on in the child: it would keep the port or pipe open for the child's whole life.
+// Everything above stderr becomes close-on-exec, so the failure report pipe still works until
+// exec. Async-signal-safe; kernels before 5.11 lack CLOSE_RANGE_CLOEXEC, so fcntl each one.
+void MarkInheritedDescriptorsCloseOnExec() {
+  if (close_range(STDERR_FILENO + 1, ~0U, CLOSE_RANGE_CLOEXEC) == 0) return;
+  rlimit limit{};
+  const int max_fd = getrlimit(RLIMIT_NOFILE, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY
+                         ? static_cast<int>(std::min<rlim_t>(limit.rlim_cur, 1 << 20))
+                         : 1 << 16;
+  for (int fd = STDERR_FILENO + 1; fd < max_fd; ++fd) fcntl(fd, F_SETFD, FD_CLOEXEC);
+}
+
 // Runs in the child between fork and exec: async-signal-safe calls only.
 [[noreturn]] void ExecChild(int report_fd, int stdin_fd, int log_fd, const char* working_dir,
                             const char* exe, char* const* argv, char* const* envp, pid_t parent) {
@@ -77,6 +92,7 @@ int OpenOrThrow(const std::string& program, const std::string& path, int flags, 
   if (log_fd >= 0 && (dup2(log_fd, STDOUT_FILENO) < 0 || dup2(log_fd, STDERR_FILENO) < 0)) {
     fail(kStageSetup);
   }
+  MarkInheritedDescriptorsCloseOnExec();
   if (working_dir != nullptr && chdir(working_dir) != 0) fail(kStageChdir);
   execve(exe, argv, envp);
   fail(kStageExec);

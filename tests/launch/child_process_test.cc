@@ -4,6 +4,7 @@
 #include "core/launch/child_process.h"
 
 #include <gtest/gtest.h>
+#include <poll.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -126,6 +127,21 @@ TEST(ChildProcess, SignalReachesTheWholeGroup) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
   while (!Dead(grandchild) && std::chrono::steady_clock::now() < deadline) usleep(2000);
   EXPECT_TRUE(Dead(grandchild)) << "grandchild " << grandchild << " still alive";
+}
+
+// A descriptor the parent opened without O_CLOEXEC (as another thread's library might) must not
+// stay open in a running child: it would hold the parent's pipe or port for the child's life.
+TEST(ChildProcess, DescriptorsWithoutCloseOnExecAreNotInherited) {
+  int ends[2];
+  ASSERT_EQ(pipe(ends), 0) << "a pipe without O_CLOEXEC";
+  ChildProcess child = ChildProcess::Spawn(Shell("exec sleep 30"));
+  close(ends[1]);
+  pollfd reader{ends[0], POLLIN, 0};
+  const int ready = poll(&reader, 1, 5000);
+  close(ends[0]);
+  EXPECT_EQ(ready, 1) << "the write end is still open somewhere: the child inherited it";
+  EXPECT_TRUE(reader.revents & POLLHUP);
+  EXPECT_TRUE(child.running()) << "the check must be made while the child runs";
 }
 
 TEST(ChildProcess, DescribeWaitStatusNamesSignals) {
