@@ -64,14 +64,9 @@ void PrintPlant(const NbvCase& nbv_case, const IsolatedResult& run) {
 int RunNbvBenchmark(const std::vector<std::string>& arguments) {
   std::vector<std::string> presets = {"rosette", "broadleaf", "strap", "bushy"};
   std::vector<std::string> meshes;
-  double scale = 0.5;
-  int baseline_views = 40;
-  uint64_t seed = 1;
   bool json = false;
-  bool build = false;
-  int capture_budget = planner::ActiveVisionOptions{}.max_views;
-  double prune_face_loss = planner::ActiveVisionOptions{}.prune_max_covered_faces_lost;
-  std::vector<double> elevations;
+  // Every plant's case is a copy of this one, with the options bound to it directly.
+  NbvCase settings;
   CLI::App app{
       "avc bench nbv: the planner's active vision (Algorithm 1: framing, the 3x10 orbit,\n"
       "view-sphere search for badly seen proxy patches, redundant-view removal) in the\n"
@@ -82,27 +77,28 @@ int RunNbvBenchmark(const std::vector<std::string>& arguments) {
   app.add_option("--presets", presets, "simulated plants")->delimiter(',')->capture_default_str();
   app.add_option("--mesh", meshes, "also a plant mesh file (PLY/OBJ/OFF, metres)")
       ->check(CLI::ExistingFile);
-  app.add_option("--render-scale", scale, "capture resolution over the camera's")
+  app.add_option("--render-scale", settings.render_scale, "capture resolution over the camera's")
       ->capture_default_str()
       ->check(CLI::Range(0.1, 1.0));
-  app.add_option("--views", baseline_views, "images of each baseline")
+  app.add_option("--views", settings.baseline_views, "images of each baseline")
       ->capture_default_str()
       ->check(CLI::Range(3, 200));
-  app.add_option("--capture-budget", capture_budget,
+  app.add_option("--capture-budget", settings.capture_budget,
                  "captures the planner may take before removing redundant ones")
       ->capture_default_str()
       ->check(CLI::Range(30, 200));
-  app.add_option("--prune-face-loss", prune_face_loss,
+  app.add_option("--prune-face-loss", settings.prune_face_loss,
                  "fraction of the proxy faces covered by all captures that Phase 3 may leave "
                  "under 3 views (1: the paper's rule alone)")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1.0));
-  app.add_option("--elevations", elevations, "Phase 1's three heights, degrees")
+  app.add_option("--elevations", settings.elevations_deg, "Phase 1's three heights, degrees")
       ->delimiter(',')
       ->expected(3)
       ->check(CLI::Range(0.0, 89.0));
-  app.add_option("--seed", seed, "coverage sampling and random-view seed")->capture_default_str();
-  app.add_flag("--build", build,
+  app.add_option("--seed", settings.seed, "coverage sampling and random-view seed")
+      ->capture_default_str();
+  app.add_flag("--build", settings.build,
                "also run the builder (patch MVS) on every view set but the ceiling and score its "
                "points against the plant: the paper's Table 1 (minutes per plant)");
   app.add_flag("--json", json, "print the results as one JSON line at the end");
@@ -110,20 +106,14 @@ int RunNbvBenchmark(const std::vector<std::string>& arguments) {
 
   std::vector<NbvCase> cases;
   for (const std::string& preset : presets) {
-    if (!preset.empty())
-      cases.push_back({preset,
-                       {},
-                       scale,
-                       baseline_views,
-                       seed,
-                       build,
-                       capture_budget,
-                       prune_face_loss,
-                       elevations});
+    if (preset.empty()) continue;
+    cases.push_back(settings);
+    cases.back().plant = preset;
   }
   for (const std::string& mesh : meshes) {
-    cases.push_back({std::filesystem::path(mesh).stem().string(), mesh, scale, baseline_views, seed,
-                     build, capture_budget, prune_face_loss, elevations});
+    cases.push_back(settings);
+    cases.back().plant = std::filesystem::path(mesh).stem().string();
+    cases.back().mesh_file = mesh;
   }
   nlohmann::json report = {{"benchmark", "nbv"}, {"plants", nlohmann::json::array()}};
   bool failed = false;
