@@ -51,6 +51,9 @@ void CheckOptions(const ClusterOptions& o) {
           "link_factor and bin_factor must be > 0; noise_factor, flatness_ratio and "
           "min_normal_gain >= 0");
   Require(std::isfinite(o.link_mean_slope), "link_mean_slope must be finite (< 0: not used)");
+  Require(std::isfinite(o.tube.min_alignment) && o.tube.min_alignment >= 0 &&
+              std::isfinite(o.tube.max_radius_spread) && o.tube.max_radius_spread >= 0,
+          "tube.min_alignment and tube.max_radius_spread must be finite and >= 0");
   Require(o.min_cluster_points >= 0 && o.refinement_rounds >= 0 && o.reassignment_rounds >= 0,
           "min_cluster_points, refinement_rounds and reassignment_rounds must be >= 0");
   Require(o.neck_neighbours >= 1 && o.neck_lanczos_steps >= 2 && o.sheet_lanczos_steps >= 2,
@@ -160,7 +163,8 @@ Assignment ClusterPlant(const PointSet& set, const ClusterOptions& options, Clus
       continue;
     }
     const PrincipalAxes axes = FitPrincipalAxes(points, cluster);
-    if (!IsFlat(axes, noise_tolerance, options.flatness_ratio)) {
+    if (!IsFlat(axes, noise_tolerance, options.flatness_ratio) &&
+        !IsTubeAboutLongestAxis(points, normals, cluster, axes, options.tube)) {
       // The bare cut (a plane across lambda_max) need only show half the gain; the refined
       // boundary must show all of it.
       const NormalSplit split =

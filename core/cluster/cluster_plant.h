@@ -39,6 +39,7 @@
 
 #include "core/cluster/connected_components.h"
 #include "core/cluster/point_set.h"
+#include "core/cluster/tube_shape.h"
 
 namespace avc::cluster {
 
@@ -65,6 +66,9 @@ struct ClusterOptions {
   // A normal split must raise normal coherence by this fraction of the points (0.1: two planes
   // meeting at more than ~37 degrees; a sheet bent smoothly through 60 degrees gains ~0.06).
   double min_normal_gain = 0.1;
+  // ... and the cluster is not a tube: a stem or petiole, whose normals point away from its
+  // longest axis, is not split by its normals (tube_shape.h; min_alignment > 1 turns it off).
+  TubeRule tube;
   // Passes of point-wise refinement of a normal split and of an overlapping-sheet cut.
   int refinement_rounds = 4;
   // Smallest real cluster; 0 = automatic: 13 points (4 pi, a disc of radius two mean sample

@@ -203,6 +203,27 @@ TEST(ClusterPlant, LeafOnAStemGivesLeafAndStem) {
   EXPECT_GE(CorrectlyClusteredFraction(assignment, set.labels), 0.99);
 }
 
+// A thick stem sampled sparsely (seed 15's set D: 116 points on a 16 mm wide, 75 mm stem among
+// leaves 2.6 mm apart). Its normals gain from a split into opposite lengthwise strips, which fall
+// apart into four pieces: the normal constraint must not take that as two planes at a fold.
+TEST(ClusterPlant, SparseThickStemStaysOneCluster) {
+  ClusterOptions options;
+  options.spacing = 0.0026;  // the leaves' spacing, as in set D
+  options.noise = 0.00016;
+  int whole = 0;
+  const int trials = 20;
+  for (int trial = 0; trial < trials; ++trial) {
+    std::mt19937_64 rng(100 + trial);
+    PointSet set;
+    AddCylinder(&set, {0, 0, 0}, 0.008f, 0.075f, 116, 0, rng);
+    AddNoise(&set, 0.0002f, 0.05f, rng);
+    const Assignment assignment = ClusterPlant(set, options);
+    whole += DistinctClusters(assignment) == 1 &&
+             CorrectlyClusteredFraction(assignment, set.labels) == 1.0;
+  }
+  EXPECT_EQ(whole, trials);
+}
+
 TEST(ClusterPlant, IsolatedPointsAreOutliers) {
   std::mt19937_64 rng(16);
   PointSet set;

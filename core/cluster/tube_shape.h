@@ -1,0 +1,35 @@
+#pragma once
+
+// Whether a cluster is a tube about its longest principal axis: a stem or petiole, whose
+// normals point away from that axis. The normal constraint (paper §3.2 Step 1) is made for
+// leaves: a tube's normals do gain from a split, but only by sorting its points into opposite
+// lengthwise strips (measured: seed 15's set D, a 16 mm wide stem with 116 points, fell into four
+// strips). A leaf curled into a half-pipe along its length passes too, and is not split either.
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "core/cluster/pca.h"
+
+namespace avc::cluster {
+
+// What makes a tube. Measured (Table 2 sets, seeds 1-15, and the surface bench's leaves): the
+// stems' median alignment is 0.98-0.99 with radius spreads of 0.16-0.22; leaves that an arch or
+// a curl gives aligned normals reach 0.70-0.86 with spreads of 0.40-0.78.
+struct TubeRule {
+  double min_alignment = 0.9;      // median |n . r| (25 degrees)
+  double max_radius_spread = 0.3;  // RMS spread of the distances to the axis over their mean
+};
+
+// True when the median over the points of |n . r| is at least rule.min_alignment, with r the
+// unit offset of the point from the longest axis (through the centroid) and n its unit normal;
+// the points with such normals lie all round the axis (6 of 8 sectors); and their distances to
+// it vary little (a round cross-section). Points on the axis itself are skipped; false when no
+// point is off it.
+bool IsTubeAboutLongestAxis(const std::vector<Eigen::Vector3f>& points,
+                            const std::vector<Eigen::Vector3f>& normals,
+                            const std::vector<uint32_t>& cluster, const PrincipalAxes& axes,
+                            const TubeRule& rule = {});
+
+}  // namespace avc::cluster
