@@ -16,6 +16,7 @@
 #include "core/util/clock.h"
 #include "core/util/file_io.h"
 #include "orchestrator/report_html.h"
+#include "orchestrator/scan_planner_settings.h"
 #include "orchestrator/scan_processing.h"
 #include "services/planner/calibrated_cell.h"
 
@@ -115,15 +116,23 @@ class ScanRun {
     if (fs::exists(dir_ / "scan.json")) {
       record_ = LoadScanRecord(dir_);
       machine_ = ScanStateMachine::Restore(record_.state, record_.interrupted);
+      planner::ActiveVisionOptions recorded = options_.planner;
+      RestorePlannerSettings(record_.options, &recorded);
+      const std::string changes = DescribePlannerChanges(recorded, options_.planner);
+      if (options_.planner_settings_given && !changes.empty()) {
+        throw std::runtime_error(
+            fmt::format("a resumed scan keeps the planner settings it started with, so that it "
+                        "asks for the same views: {}; resume without them",
+                        changes));
+      }
+      options_.planner = recorded;
       return;
     }
     record_.scan_id =
         options_.scan_id.empty() ? fs::absolute(dir_).filename().string() : options_.scan_id;
     record_.created_utime = clock_.NowMicros();
-    record_.options = {{"calibration_file", options_.calibration_file.string()},
-                       {"max_views", options_.planner.max_views},
-                       {"levels", options_.planner.levels},
-                       {"views_per_level", options_.planner.views_per_level}};
+    record_.options = {{"calibration_file", options_.calibration_file.string()}};
+    RecordPlannerSettings(options_.planner, &record_.options);
     Persist();
   }
 
@@ -342,7 +351,7 @@ class ScanRun {
   }
 
   client::CellClient& cell_;
-  const ScanRunOptions& options_;
+  ScanRunOptions options_;  // a copy: a resumed scan takes its planner settings from its record
   const std::function<void(const ScanProgress&)>& progress_;
   fs::path dir_;
   fs::path model_dir_;

@@ -43,6 +43,9 @@ struct ScanRunOptions {
   std::string scan_id;                     // default: the directory's name
   std::filesystem::path calibration_file;  // default: the scan's own calibration.yaml
   planner::ActiveVisionOptions planner;
+  // A resumed scan plans with the settings it started with (scan_planner_settings.h). When the
+  // caller chose planner settings on purpose, a resume refuses other ones instead.
+  bool planner_settings_given = false;
   ScanCaptureOptions capture;
   builder::ReconstructOptions build;
   clusterer::ClustererOptions cluster;

@@ -140,6 +140,21 @@ TEST(ScanMultiproc, PausedKilledAndResumedScanFinishesWithEveryImageOnce) {
     EXPECT_TRUE(WIFEXITED(*status) && WEXITSTATUS(*status) == 1);
     EXPECT_NE(testing::ReadFile(dir.path() / "again.log").find("--resume"), std::string::npos);
   }
+  {  // A resume with other planner settings is refused: it would plan other views.
+    bench::ScanProcessOptions options;
+    options.avc_binary = testing::Executable("avc");
+    options.bus = bus_options;
+    options.key_file = cell.key().file;
+    options.log = dir.path() / "other.log";
+    options.planner_args = {"--max-views", "50", "--views-per-height", "6"};
+    launch::ChildProcess other = bench::StartScanProcess({"--resume", scan_dir.string()}, options);
+    const auto status = other.WaitFor(milliseconds(20000));
+    ASSERT_TRUE(status.has_value());
+    EXPECT_TRUE(WIFEXITED(*status) && WEXITSTATUS(*status) == 1);
+    EXPECT_NE(testing::ReadFile(dir.path() / "other.log").find("max_views 14 (given 50)"),
+              std::string::npos)
+        << testing::ReadFile(dir.path() / "other.log");
+  }
   {  // Resumed, then killed outright halfway.
     launch::ChildProcess scan =
         StartScan({"--resume", scan_dir.string()}, bus_options, cell.key().file, log);

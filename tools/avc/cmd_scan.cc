@@ -35,6 +35,8 @@ struct ScanArgs {
   bool jpeg = false;
   int max_views = planner::ActiveVisionOptions{}.max_views;
   int views_per_level = planner::ActiveVisionOptions{}.views_per_level;
+  double prune_face_loss = planner::ActiveVisionOptions{}.prune_max_covered_faces_lost;
+  bool planner_flags_given = false;  // --max-views, --views-per-height or --prune-face-loss
   double ready_timeout_s = 30;
   EnvelopeFlags envelope;
   AuthFlags auth;
@@ -67,6 +69,8 @@ int RunScanCommand(const ScanArgs& args) {
   options.calibration_file = args.calibration;
   options.planner.max_views = args.max_views;
   options.planner.views_per_level = args.views_per_level;
+  options.planner.prune_max_covered_faces_lost = args.prune_face_loss;
+  options.planner_settings_given = args.planner_flags_given;
   options.planner.reach.envelope = PlanningEnvelopeOf(args.envelope);
   if (args.jpeg) options.capture.encoding = avc::image_t::ENCODING_JPEG;
   options.ready_timeout =
@@ -113,12 +117,22 @@ void RegisterScan(CLI::App& root, int* exit_code) {
   command->add_flag("--resume", args->resume, "continue the scan in DIR where it stopped");
   command->add_flag("--states", args->states,
                     "print the scan's states, the services each needs and where each may go");
-  command->add_option("--max-views", args->max_views, "most images the planner captures")
-      ->capture_default_str()
-      ->check(CLI::Range(4, 200));
-  command->add_option("--views-per-height", args->views_per_level, "orbit views per height")
-      ->capture_default_str()
-      ->check(CLI::Range(3, 36));
+  CLI::Option* max_views =
+      command->add_option("--max-views", args->max_views, "most images the planner captures")
+          ->capture_default_str()
+          ->check(CLI::Range(4, 200));
+  CLI::Option* views_per_height =
+      command->add_option("--views-per-height", args->views_per_level, "orbit views per height")
+          ->capture_default_str()
+          ->check(CLI::Range(3, 36));
+  CLI::Option* prune_face_loss =
+      command
+          ->add_option("--prune-face-loss", args->prune_face_loss,
+                       "fraction of the plant proxy's well-seen faces that removing redundant "
+                       "views may leave under 3 views (1: the paper's rule alone; 0.01 with "
+                       "--max-views 50 keeps more views and coverage, see BENCHMARKS.md nbv)")
+          ->capture_default_str()
+          ->check(CLI::Range(0.0, 1.0));
   AddEnvelopeFlags(command, &args->envelope);
   command->add_flag("--jpeg", args->jpeg, "keep the camera's JPEG (default: lossless PNG)");
   command
@@ -128,7 +142,11 @@ void RegisterScan(CLI::App& root, int* exit_code) {
       ->check(CLI::PositiveNumber);
   AddSenderKeyFlag(command, &args->auth);
   AddBusFlags(command, &args->bus);
-  SetGuardedRun(command, exit_code, [args] { return RunScanCommand(*args); });
+  SetGuardedRun(command, exit_code, [args, max_views, views_per_height, prune_face_loss] {
+    args->planner_flags_given =
+        max_views->count() + views_per_height->count() + prune_face_loss->count() > 0;
+    return RunScanCommand(*args);
+  });
 }
 
 }  // namespace avc::cli
