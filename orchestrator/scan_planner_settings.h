@@ -5,8 +5,8 @@
 // settings from the record; a resume whose command line asks for other ones is refused.
 
 #include <nlohmann/json.hpp>
+#include <set>
 #include <string>
-#include <vector>
 
 #include "services/planner/active_vision.h"
 
@@ -22,9 +22,16 @@ void RecordPlannerSettings(const planner::ActiveVisionOptions& planner, nlohmann
 // damaged, and a guess would plan other views than those on disk.
 void RestorePlannerSettings(const nlohmann::json& options, planner::ActiveVisionOptions* planner);
 
-// The recorded settings that given changes, as "max_views 14 (given 50), ..."; empty when
-// given plans the same views.
+// The keys in scan.json's "options".
+inline constexpr char kMaxViewsSetting[] = "max_views";
+inline constexpr char kLevelsSetting[] = "levels";
+inline constexpr char kViewsPerLevelSetting[] = "views_per_level";
+inline constexpr char kPruneFaceLossSetting[] = "prune_face_loss";
+
+// Of the settings named in keys, those given changes from recorded, as "max_views 14 (given 50),
+// ..."; empty when none changes.
 std::string DescribePlannerChanges(const planner::ActiveVisionOptions& recorded,
-                                   const planner::ActiveVisionOptions& given);
+                                   const planner::ActiveVisionOptions& given,
+                                   const std::set<std::string>& keys);
 
 }  // namespace avc::orchestrator

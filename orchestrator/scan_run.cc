@@ -118,8 +118,9 @@ class ScanRun {
       machine_ = ScanStateMachine::Restore(record_.state, record_.interrupted);
       planner::ActiveVisionOptions recorded = options_.planner;
       RestorePlannerSettings(record_.options, &recorded);
-      const std::string changes = DescribePlannerChanges(recorded, options_.planner);
-      if (options_.planner_settings_given && !changes.empty()) {
+      const std::string changes =
+          DescribePlannerChanges(recorded, options_.planner, options_.planner_settings_given);
+      if (!changes.empty()) {
         throw std::runtime_error(
             fmt::format("a resumed scan keeps the planner settings it started with, so that it "
                         "asks for the same views: {}; resume without them",

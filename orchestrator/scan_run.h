@@ -25,6 +25,7 @@
 #include <filesystem>
 #include <functional>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -43,9 +44,9 @@ struct ScanRunOptions {
   std::string scan_id;                     // default: the directory's name
   std::filesystem::path calibration_file;  // default: the scan's own calibration.yaml
   planner::ActiveVisionOptions planner;
-  // A resumed scan plans with the settings it started with (scan_planner_settings.h). When the
-  // caller chose planner settings on purpose, a resume refuses other ones instead.
-  bool planner_settings_given = false;
+  // A resumed scan plans with the settings it started with (scan_planner_settings.h); a resume
+  // refuses to change those the caller chose on purpose, named here by their keys there.
+  std::set<std::string> planner_settings_given;
   ScanCaptureOptions capture;
   builder::ReconstructOptions build;
   clusterer::ClustererOptions cluster;

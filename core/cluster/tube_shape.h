@@ -4,7 +4,8 @@
 // normals point away from that axis. The normal constraint (paper §3.2 Step 1) is made for
 // leaves: a tube's normals do gain from a split, but only by sorting its points into opposite
 // lengthwise strips (measured: seed 15's set D, a 16 mm wide stem with 116 points, fell into four
-// strips). A leaf curled into a half-pipe along its length passes too, and is not split either.
+// strips). A leaf arched or curled along its length also has normals along its offsets from the
+// axis, but on fewer sides of it and at distances that vary: it is still split.
 
 #include <Eigen/Core>
 #include <cstdint>

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -66,11 +67,18 @@ TEST(ScanPlannerSettings, ChangesAreNamedWithBothValues) {
   planner::ActiveVisionOptions recorded;
   recorded.max_views = 14;
   planner::ActiveVisionOptions given = recorded;
-  EXPECT_EQ(DescribePlannerChanges(recorded, given), "") << "the same settings plan the same views";
+  const std::set<std::string> all = {kMaxViewsSetting, kLevelsSetting, kViewsPerLevelSetting,
+                                     kPruneFaceLossSetting};
+  EXPECT_EQ(DescribePlannerChanges(recorded, given, all), "")
+      << "the same settings plan the same views";
   given.max_views = 50;
   given.prune_max_covered_faces_lost = 0.01;
-  EXPECT_EQ(DescribePlannerChanges(recorded, given),
+  EXPECT_EQ(DescribePlannerChanges(recorded, given, all),
             "max_views 14 (given 50), prune_face_loss 1 (given 0.01)");
+  // A setting the caller did not choose (a default of the command line) is not a change.
+  EXPECT_EQ(DescribePlannerChanges(recorded, given, {kPruneFaceLossSetting}),
+            "prune_face_loss 1 (given 0.01)");
+  EXPECT_EQ(DescribePlannerChanges(recorded, given, {}), "");
 }
 
 }  // namespace

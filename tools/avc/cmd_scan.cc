@@ -9,9 +9,13 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <set>
+#include <string>
+#include <utility>
 
 #include "core/bus/bus.h"
 #include "drivers/client/cell_client.h"
+#include "orchestrator/scan_planner_settings.h"
 #include "orchestrator/scan_run.h"
 #include "orchestrator/scan_states.h"
 #include "tools/avc/auth_flags.h"
@@ -36,7 +40,7 @@ struct ScanArgs {
   int max_views = planner::ActiveVisionOptions{}.max_views;
   int views_per_level = planner::ActiveVisionOptions{}.views_per_level;
   double prune_face_loss = planner::ActiveVisionOptions{}.prune_max_covered_faces_lost;
-  bool planner_flags_given = false;  // --max-views, --views-per-height or --prune-face-loss
+  std::set<std::string> planner_settings_given;  // scan_planner_settings.h keys
   double ready_timeout_s = 30;
   EnvelopeFlags envelope;
   AuthFlags auth;
@@ -70,7 +74,7 @@ int RunScanCommand(const ScanArgs& args) {
   options.planner.max_views = args.max_views;
   options.planner.views_per_level = args.views_per_level;
   options.planner.prune_max_covered_faces_lost = args.prune_face_loss;
-  options.planner_settings_given = args.planner_flags_given;
+  options.planner_settings_given = args.planner_settings_given;
   options.planner.reach.envelope = PlanningEnvelopeOf(args.envelope);
   if (args.jpeg) options.capture.encoding = avc::image_t::ENCODING_JPEG;
   options.ready_timeout =
@@ -143,8 +147,12 @@ void RegisterScan(CLI::App& root, int* exit_code) {
   AddSenderKeyFlag(command, &args->auth);
   AddBusFlags(command, &args->bus);
   SetGuardedRun(command, exit_code, [args, max_views, views_per_height, prune_face_loss] {
-    args->planner_flags_given =
-        max_views->count() + views_per_height->count() + prune_face_loss->count() > 0;
+    for (const auto& [option, key] :
+         {std::pair{max_views, orchestrator::kMaxViewsSetting},
+          std::pair{views_per_height, orchestrator::kViewsPerLevelSetting},
+          std::pair{prune_face_loss, orchestrator::kPruneFaceLossSetting}}) {
+      if (option->count() > 0) args->planner_settings_given.insert(key);
+    }
     return RunScanCommand(*args);
   });
 }
