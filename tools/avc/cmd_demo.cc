@@ -27,6 +27,7 @@
 #include "sim/scene/plant.h"
 #include "tools/avc/bus_flags.h"
 #include "tools/avc/commands.h"
+#include "tools/avc/planner_flags.h"
 #include "tools/avc/run_guarded.h"
 #include "tools/avc/scan_progress.h"
 
@@ -43,7 +44,7 @@ struct DemoArgs {
   std::string calibration;
   bool recalibrate = false;
   double time_scale = 10;
-  int max_views = planner::ActiveVisionOptions{}.max_views;
+  planner::ActiveVisionOptions planner;  // the flags' settings
   bus::BusFlags bus;
 };
 
@@ -168,7 +169,8 @@ int RunDemo(const DemoArgs& args) {
   orchestrator::ScanRunOptions scan;
   scan.scan_dir = dir;
   scan.calibration_file = calibration;
-  scan.planner.max_views = args.max_views;
+  scan.planner.max_views = args.planner.max_views;
+  scan.planner.prune_max_covered_faces_lost = args.planner.prune_max_covered_faces_lost;
   scan.planner.reach.envelope = kinematics::PlanningEnvelope(sim::NominalCellEnvelope());
   scan.stop_requested = [&loop] { return loop.quitting(); };
   ScanStateBroadcast broadcast(bus, loop);
@@ -224,9 +226,7 @@ void RegisterDemo(CLI::App& root, int* exit_code) {
                    "simulated seconds per real second (robot and turntable motion)")
       ->capture_default_str()
       ->check(CLI::Range(0.1, 100.0));
-  command->add_option("--max-views", args->max_views, "most images the planner captures")
-      ->capture_default_str()
-      ->check(CLI::Range(4, 200));
+  AddPlannerFlags(command, &args->planner);
   AddBusFlags(command, &args->bus);
   SetGuardedRun(command, exit_code, [args] { return RunDemo(*args); });
 }

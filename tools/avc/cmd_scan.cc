@@ -22,6 +22,7 @@
 #include "tools/avc/bus_flags.h"
 #include "tools/avc/commands.h"
 #include "tools/avc/envelope_flags.h"
+#include "tools/avc/planner_flags.h"
 #include "tools/avc/run_guarded.h"
 #include "tools/avc/scan_progress.h"
 
@@ -37,9 +38,7 @@ struct ScanArgs {
   bool resume = false;
   bool states = false;
   bool jpeg = false;
-  int max_views = planner::ActiveVisionOptions{}.max_views;
-  int views_per_level = planner::ActiveVisionOptions{}.views_per_level;
-  double prune_face_loss = planner::ActiveVisionOptions{}.prune_max_covered_faces_lost;
+  planner::ActiveVisionOptions planner;          // the flags' settings
   std::set<std::string> planner_settings_given;  // scan_planner_settings.h keys
   double ready_timeout_s = 30;
   EnvelopeFlags envelope;
@@ -71,9 +70,7 @@ int RunScanCommand(const ScanArgs& args) {
   orchestrator::ScanRunOptions options;
   options.scan_dir = dir;
   options.calibration_file = args.calibration;
-  options.planner.max_views = args.max_views;
-  options.planner.views_per_level = args.views_per_level;
-  options.planner.prune_max_covered_faces_lost = args.prune_face_loss;
+  options.planner = args.planner;
   options.planner_settings_given = args.planner_settings_given;
   options.planner.reach.envelope = PlanningEnvelopeOf(args.envelope);
   if (args.jpeg) options.capture.encoding = avc::image_t::ENCODING_JPEG;
@@ -121,22 +118,13 @@ void RegisterScan(CLI::App& root, int* exit_code) {
   command->add_flag("--resume", args->resume, "continue the scan in DIR where it stopped");
   command->add_flag("--states", args->states,
                     "print the scan's states, the services each needs and where each may go");
-  CLI::Option* max_views =
-      command->add_option("--max-views", args->max_views, "most images the planner captures")
-          ->capture_default_str()
-          ->check(CLI::Range(4, 200));
+  const PlannerFlagOptions planner_flags = AddPlannerFlags(command, &args->planner);
   CLI::Option* views_per_height =
-      command->add_option("--views-per-height", args->views_per_level, "orbit views per height")
+      command
+          ->add_option("--views-per-height", args->planner.views_per_level,
+                       "orbit views per height")
           ->capture_default_str()
           ->check(CLI::Range(3, 36));
-  CLI::Option* prune_face_loss =
-      command
-          ->add_option("--prune-face-loss", args->prune_face_loss,
-                       "fraction of the plant proxy's well-seen faces that removing redundant "
-                       "views may leave under 3 views (1: the paper's rule alone; 0.01 with "
-                       "--max-views 50 keeps more views and coverage, see BENCHMARKS.md nbv)")
-          ->capture_default_str()
-          ->check(CLI::Range(0.0, 1.0));
   AddEnvelopeFlags(command, &args->envelope);
   command->add_flag("--jpeg", args->jpeg, "keep the camera's JPEG (default: lossless PNG)");
   command
@@ -146,11 +134,11 @@ void RegisterScan(CLI::App& root, int* exit_code) {
       ->check(CLI::PositiveNumber);
   AddSenderKeyFlag(command, &args->auth);
   AddBusFlags(command, &args->bus);
-  SetGuardedRun(command, exit_code, [args, max_views, views_per_height, prune_face_loss] {
+  SetGuardedRun(command, exit_code, [args, planner_flags, views_per_height] {
     for (const auto& [option, key] :
-         {std::pair{max_views, orchestrator::kMaxViewsSetting},
+         {std::pair{planner_flags.max_views, orchestrator::kMaxViewsSetting},
           std::pair{views_per_height, orchestrator::kViewsPerLevelSetting},
-          std::pair{prune_face_loss, orchestrator::kPruneFaceLossSetting}}) {
+          std::pair{planner_flags.prune_face_loss, orchestrator::kPruneFaceLossSetting}}) {
       if (option->count() > 0) args->planner_settings_given.insert(key);
     }
     return RunScanCommand(*args);
