@@ -13,13 +13,16 @@ namespace {
       what));
 }
 
+// Far above any planner count the command line allows (200 views), far below int's range.
+constexpr int64_t kLargestRecordedCount = 10000;
+
 void RestoreInteger(const nlohmann::json& options, const char* key, int min, int* value) {
   const auto it = options.find(key);
   if (it == options.end()) return;
   if (!it->is_number_integer()) Fail(key, "must be an integer, got " + it->dump());
   const int64_t recorded = it->get<int64_t>();
-  if (recorded < min || recorded > 10000) {
-    Fail(key, fmt::format("must be in [{}, 10000], got {}", min, recorded));
+  if (recorded < min || recorded > kLargestRecordedCount) {
+    Fail(key, fmt::format("must be in [{}, {}], got {}", min, kLargestRecordedCount, recorded));
   }
   *value = static_cast<int>(recorded);
 }

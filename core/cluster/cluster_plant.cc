@@ -164,7 +164,7 @@ Assignment ClusterPlant(const PointSet& set, const ClusterOptions& options, Clus
     }
     const PrincipalAxes axes = FitPrincipalAxes(points, cluster);
     if (!IsFlat(axes, noise_tolerance, options.flatness_ratio) &&
-        !IsTubeAboutLongestAxis(points, normals, cluster, axes, options.tube)) {
+        !IsTube(points, normals, cluster, axes, options.tube)) {
       // The bare cut (a plane across lambda_max) need only show half the gain; the refined
       // boundary must show all of it.
       const NormalSplit split =

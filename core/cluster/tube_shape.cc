@@ -22,10 +22,8 @@ int SectorOf(const Eigen::Vector3d& radial, const PrincipalAxes& axes) {
 
 }  // namespace
 
-bool IsTubeAboutLongestAxis(const std::vector<Eigen::Vector3f>& points,
-                            const std::vector<Eigen::Vector3f>& normals,
-                            const std::vector<uint32_t>& cluster, const PrincipalAxes& axes,
-                            const TubeRule& rule) {
+bool IsTube(const std::vector<Eigen::Vector3f>& points, const std::vector<Eigen::Vector3f>& normals,
+            const std::vector<uint32_t>& cluster, const PrincipalAxes& axes, const TubeRule& rule) {
   const Eigen::Vector3d axis = axes.LongestAxis();
   std::vector<double> alignments;
   alignments.reserve(cluster.size());

@@ -28,9 +28,7 @@ struct TubeRule {
 // the points with such normals lie all round the axis (6 of 8 sectors); and their distances to
 // it vary little (a round cross-section). Points on the axis itself are skipped; false when no
 // point is off it.
-bool IsTubeAboutLongestAxis(const std::vector<Eigen::Vector3f>& points,
-                            const std::vector<Eigen::Vector3f>& normals,
-                            const std::vector<uint32_t>& cluster, const PrincipalAxes& axes,
-                            const TubeRule& rule = {});
+bool IsTube(const std::vector<Eigen::Vector3f>& points, const std::vector<Eigen::Vector3f>& normals,
+            const std::vector<uint32_t>& cluster, const PrincipalAxes& axes, const TubeRule& rule);
 
 }  // namespace avc::cluster

@@ -169,8 +169,7 @@ int RunDemo(const DemoArgs& args) {
   orchestrator::ScanRunOptions scan;
   scan.scan_dir = dir;
   scan.calibration_file = calibration;
-  scan.planner.max_views = args.planner.max_views;
-  scan.planner.prune_max_covered_faces_lost = args.planner.prune_max_covered_faces_lost;
+  scan.planner = args.planner;
   scan.planner.reach.envelope = kinematics::PlanningEnvelope(sim::NominalCellEnvelope());
   scan.stop_requested = [&loop] { return loop.quitting(); };
   ScanStateBroadcast broadcast(bus, loop);
