@@ -2,35 +2,19 @@
 
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <memory>
 
 #include "core/util/log.h"
 #include "tools/avc/commands.h"
-
-namespace {
-
-// A command's listing in its parent's help shows the first line of its description; the rest
-// moves to the top of its own footer, so 'avc --help' stays one line per command while
-// 'avc COMMAND --help' keeps every word.
-void ShortenListings(CLI::App& app) {
-  for (CLI::App* command : app.get_subcommands({})) {
-    const std::string description = command->get_description();
-    const size_t newline = description.find('\n');
-    if (newline != std::string::npos) {
-      const std::string footer = command->get_footer();
-      command->description(description.substr(0, newline));
-      command->footer(description.substr(newline + 1) + (footer.empty() ? "" : "\n" + footer));
-    }
-    ShortenListings(*command);
-  }
-}
-
-}  // namespace
+#include "tools/avc/help_formatter.h"
 
 int main(int argc, char** argv) {
   avc::log::SetProcessName("avc");
   CLI::App app{
       "avc - Active Vision Cell: scans a plant into a 3D surface model.\n"
       "Run 'avc COMMAND --help' for the options of a command."};
+  // Before the subcommands are added: each takes its parent's formatter when it is created.
+  app.formatter(std::make_shared<avc::cli::SummaryListingFormatter>());
   app.require_subcommand(1);
   app.fallthrough(false);
   int exit_code = 0;
@@ -58,7 +42,6 @@ int main(int argc, char** argv) {
   avc::cli::RegisterDemo(app, &exit_code);
   avc::cli::RegisterReport(app, &exit_code);
   avc::cli::RegisterKey(app, &exit_code);
-  ShortenListings(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
