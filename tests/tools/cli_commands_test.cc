@@ -1,6 +1,6 @@
 // The avc commands that talk to a live bus, as real processes in a private network namespace:
 // status sees a running service, spy starts lcm-spy with every AVC type, bench bus delivers
-// every product.
+// every product; and the help they print.
 
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -88,6 +88,30 @@ TEST(CliCommands, StatusSaysWhenNobodyIsThere) {
                  dir / "status.log", std::chrono::seconds(10));
   EXPECT_EQ(ExitCode(status.status), 1);
   EXPECT_NE(status.output.find("no heartbeats on cell empty"), std::string::npos) << status.output;
+}
+
+// The help a user meets first: every command listed on one line by its summary, and `avc bench
+// --help` with one usage line and the benchmarks it can run.
+TEST(CliCommands, HelpListsCommandsAndBenchmarks) {
+  TempDir dir;
+  const Outcome root = RunCommand({Executable("avc").string(), "--help"}, dir / "root.log",
+                                  std::chrono::seconds(10));
+  EXPECT_EQ(ExitCode(root.status), 0);
+  EXPECT_NE(root.output.find("  reconstruct                 Reconstruct a plant from images with "
+                             "known cameras\n"),
+            std::string::npos)
+      << root.output;
+  const Outcome bench = RunCommand({Executable("avc").string(), "bench", "--help"},
+                                   dir / "bench.log", std::chrono::seconds(10));
+  EXPECT_EQ(ExitCode(bench.status), 0);
+  const size_t usage = bench.output.find("Usage: avc bench [--list] NAME [BENCHMARK OPTIONS]\n");
+  EXPECT_NE(usage, std::string::npos) << bench.output;
+  EXPECT_EQ(bench.output.find("Usage:", usage + 1), std::string::npos) << bench.output;
+  EXPECT_NE(bench.output.find("\n  clustering "), std::string::npos) << bench.output;
+  const Outcome nameless = RunCommand({Executable("avc").string(), "bench"}, dir / "nameless.log",
+                                      std::chrono::seconds(10));
+  EXPECT_EQ(ExitCode(nameless.status), 2);
+  EXPECT_NE(nameless.output.find("name a benchmark"), std::string::npos) << nameless.output;
 }
 
 // lcm-spy under Xvfb finds every AVC type: the jar is on its CLASSPATH and Java 17 accepts the

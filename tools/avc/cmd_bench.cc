@@ -10,6 +10,7 @@
 
 #include "bench/registry.h"
 #include "tools/avc/commands.h"
+#include "tools/avc/help_formatter.h"
 
 namespace avc::cli {
 namespace {
@@ -20,15 +21,29 @@ struct BenchArgs {
   bool help = false;
 };
 
-void PrintBenchmarks() {
+// One line per benchmark: its name and what it measures.
+std::string BenchmarkList(const std::string& indent) {
   size_t width = 0;
   for (const bench::Benchmark& benchmark : bench::AllBenchmarks()) {
     width = std::max(width, benchmark.name.size());
   }
+  std::string list;
   for (const bench::Benchmark& benchmark : bench::AllBenchmarks()) {
-    std::cout << fmt::format("{:<{}}  {}\n", benchmark.name, width, benchmark.description);
+    list += fmt::format("{}{:<{}}  {}\n", indent, benchmark.name, width, benchmark.description);
   }
+  return list;
 }
+
+void PrintBenchmarks() { std::cout << BenchmarkList(""); }
+
+// NAME and the benchmark's own options are taken by hand (a prefix command), so CLI11 cannot
+// build the usage line from declared options: it is spelled out here.
+class BenchHelpFormatter : public SummaryListingFormatter {
+ public:
+  std::string make_usage(const CLI::App* /*command*/, std::string name) const override {
+    return "Usage: " + name + " [--list] NAME [BENCHMARK OPTIONS]\n";
+  }
+};
 
 }  // namespace
 
@@ -37,9 +52,10 @@ void RegisterBench(CLI::App& root, int* exit_code) {
   CLI::App* command = root.add_subcommand(
       "bench",
       "Run a benchmark: our method against its baselines on the same input, in one run.\n"
-      "Usage: avc bench [--list] NAME [BENCHMARK OPTIONS]\n"
       "Arguments after NAME go to the benchmark ('avc bench NAME --help' lists them).\n"
       "Results are printed as a table; --json adds one JSON line. Figures: BENCHMARKS.md.");
+  command->formatter(std::make_shared<BenchHelpFormatter>());
+  command->footer("Benchmarks (NAME):\n" + BenchmarkList("  "));
   command->add_flag("--list", args->list, "list the benchmarks and exit");
   // Everything after NAME, --help included, belongs to the benchmark.
   command->prefix_command();
@@ -52,12 +68,17 @@ void RegisterBench(CLI::App& root, int* exit_code) {
       rest.erase(rest.begin());
     }
     if (args->help && args->name.empty()) {
-      std::cout << command->help();
+      std::cout << command->help("avc");
       return;
     }
-    if (args->list || args->name.empty()) {
+    if (args->list) {
       PrintBenchmarks();
-      *exit_code = args->list ? 0 : 2;
+      return;
+    }
+    if (args->name.empty()) {
+      std::cerr << "avc bench: name a benchmark (avc bench NAME, avc bench --help); there are:\n";
+      PrintBenchmarks();
+      *exit_code = 2;
       return;
     }
     const bench::Benchmark* benchmark = bench::FindBenchmark(args->name);
