@@ -14,8 +14,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// The report needs what a finished scan writes; a missing file most often means the folder is
+// not one (or its scan stopped before reconstructing).
 void RequireFile(const fs::path& path) {
-  if (!fs::is_regular_file(path)) throw std::runtime_error(path.string() + ": missing");
+  if (!fs::is_regular_file(path)) {
+    throw std::runtime_error(path.string() +
+                             ": missing (a finished `avc scan` or `avc demo` folder has it)");
+  }
 }
 
 nlohmann::json ReadJson(const fs::path& path) {

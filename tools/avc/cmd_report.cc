@@ -8,6 +8,7 @@
 
 #include "orchestrator/report_html.h"
 #include "tools/avc/commands.h"
+#include "tools/avc/run_guarded.h"
 
 namespace avc::cli {
 
@@ -27,10 +28,10 @@ void RegisterReport(CLI::App& root, int* exit_code) {
   command->add_option("dir", *dir, "scan directory (what `avc scan` wrote)")
       ->required()
       ->check(CLI::ExistingDirectory);
-  command->callback([dir, exit_code] {
+  SetGuardedRun(command, exit_code, [dir] {
     orchestrator::WriteReportHtml(*dir);
     std::cout << (std::filesystem::path(*dir) / "report.html").string() << "\n";
-    *exit_code = 0;
+    return 0;
   });
 }
 
