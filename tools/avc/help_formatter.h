@@ -2,7 +2,8 @@
 
 // How `avc ... --help` lists subcommands. A command's description is wrapped prose whose first
 // line usually ends mid-sentence, so a listing shows the command's summary instead: its first
-// clause, lines joined. The command's own help prints the whole description, unchanged.
+// sentence, or that sentence's first clause when it is long. The command's own help prints the
+// whole description, unchanged.
 
 #include <CLI/CLI.hpp>
 #include <cstddef>
