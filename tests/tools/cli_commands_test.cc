@@ -90,8 +90,8 @@ TEST(CliCommands, StatusSaysWhenNobodyIsThere) {
   EXPECT_NE(status.output.find("no heartbeats on cell empty"), std::string::npos) << status.output;
 }
 
-// The help a user meets first: every command listed on one line by its summary, and `avc bench
-// --help` with one usage line and the benchmarks it can run.
+// The help a user meets first: every command listed on one line by its summary, `avc bench
+// --help` with one usage line and the benchmarks it can run, and a mistyped command named.
 TEST(CliCommands, HelpListsCommandsAndBenchmarks) {
   TempDir dir;
   const Outcome root = RunCommand({Executable("avc").string(), "--help"}, dir / "root.log",
@@ -112,6 +112,12 @@ TEST(CliCommands, HelpListsCommandsAndBenchmarks) {
                                       std::chrono::seconds(10));
   EXPECT_EQ(ExitCode(nameless.status), 2);
   EXPECT_NE(nameless.output.find("name a benchmark"), std::string::npos) << nameless.output;
+  const Outcome typo = RunCommand({Executable("avc").string(), "recontsruct"}, dir / "typo.log",
+                                  std::chrono::seconds(10));
+  EXPECT_NE(ExitCode(typo.status), 0);
+  EXPECT_NE(typo.output.find("avc: no command named 'recontsruct'\nRun 'avc --help'"),
+            std::string::npos)
+      << typo.output;
 }
 
 // lcm-spy under Xvfb finds every AVC type: the jar is on its CLASSPATH and Java 17 accepts the

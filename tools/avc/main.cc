@@ -7,6 +7,7 @@
 #include "core/util/log.h"
 #include "tools/avc/commands.h"
 #include "tools/avc/help_formatter.h"
+#include "tools/avc/parse_failure.h"
 
 int main(int argc, char** argv) {
   avc::log::SetProcessName("avc");
@@ -15,6 +16,7 @@ int main(int argc, char** argv) {
       "Run 'avc COMMAND --help' for the options of a command."};
   // Before the subcommands are added: each takes its parent's formatter when it is created.
   app.formatter(std::make_shared<avc::cli::SummaryListingFormatter>());
+  app.failure_message(avc::cli::ParseFailureMessage);
   app.require_subcommand(1);
   app.fallthrough(false);
   int exit_code = 0;
