@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "core/ppr/octree_binary.h"
 #include "core/ppr/proxy_octree.h"
 
 namespace avc::ppr {
@@ -274,13 +275,7 @@ const octomap::OcTree& PlantProxy::tree() const {
   return *tree_;
 }
 
-std::string PlantProxy::BinaryBytes() const {
-  std::ostringstream out;
-  if (!tree().writeBinaryConst(out)) {
-    throw std::runtime_error("PlantProxy: OctoMap could not serialise the octree");
-  }
-  return out.str();
-}
+std::string PlantProxy::BinaryBytes() const { return OctreeBinaryBytes(tree()); }
 
 void PlantProxy::WriteBinary(const std::filesystem::path& path) const {
   const std::string bytes = BinaryBytes();
