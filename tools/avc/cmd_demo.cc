@@ -205,9 +205,9 @@ void RegisterDemo(CLI::App& root, int* exit_code) {
       "its drivers (avc up), calibrates the cell over a chessboard the first time (later demos\n"
       "reuse it from ~/.cache/avc), scans the plant with active vision and reconstructs it:\n"
       "images, cameras, calibration, plant proxy, points, clusters, mesh, traits, the LCM log\n"
-      "(scan.lcmlog) and report.json, all in DIR (default ./avc-demo-PLANT). Same as `avc scan`\n"
-      "on a simulated cell; `avc scan --resume DIR` continues an interrupted demo while the cell\n"
-      "runs (launch DIR/cell/launch.toml with avc up).\n"
+      "(scan.lcmlog), report.json and report.html, all in DIR (default ./avc-demo-PLANT). Same\n"
+      "as `avc scan` on a simulated cell; `avc scan --resume DIR` continues an interrupted demo\n"
+      "while the cell runs (launch DIR/cell/launch.toml with avc up).\n"
       "\n"
       "Example: avc demo --plant strap");
   command->add_option("dir", args->dir, "output folder (default ./avc-demo-PLANT)");

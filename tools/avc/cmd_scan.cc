@@ -106,9 +106,9 @@ void RegisterScan(CLI::App& root, int* exit_code) {
       "merge and cluster, surface and measure traits. Needs avc robot, avc turntable and avc\n"
       "camera READY (real or `avc sim cell`).\n"
       "Writes DIR/images/, cameras.json, colmap/, calibration.yaml, model/ (ppr.bt, points.ply,\n"
-      "merged.ply, clusters.ply, mesh.ply, traits.csv, traits.json), report.json and scan.json,\n"
-      "which is saved after every step: `avc scan --resume DIR` continues after a stop, a fault\n"
-      "or a crash without capturing again what is on disk.\n"
+      "merged.ply, clusters.ply, mesh.ply, traits.csv, traits.json), report.json, report.html\n"
+      "and scan.json, which is saved after every step: `avc scan --resume DIR` continues after a\n"
+      "stop, a fault or a crash without capturing again what is on disk.\n"
       "Exit codes: 0 done, 3 stopped by a fault (the message says what), 4 paused by a signal.\n"
       "\n"
       "Example: avc scan /data/plant-042 --calibration /data/cal-2026-11-23/calibration.yaml");

@@ -105,7 +105,8 @@ int ReportScanOutcome(const orchestrator::ScanOutcome& outcome) {
     case ScanState::kDone:
       std::cout << fmt::format(
           "scan done: {} images taken now, {} already on disk\n"
-          "  {}/model/mesh.ply, traits.csv; report: {}/report.json\n",
+          "  mesh and traits: {}/model/mesh.ply, traits.csv\n"
+          "  report: open {}/report.html in a browser (figures in report.json)\n",
           outcome.captured_now, outcome.reused, dir, dir);
       return 0;
     case ScanState::kPaused:
