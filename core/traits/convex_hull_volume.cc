@@ -1,10 +1,10 @@
 #include "core/traits/convex_hull_volume.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Exact_rational.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/convex_hull_3.h>
 
-#include <Eigen/Geometry>
 #include <cmath>
 
 namespace avc::traits {
@@ -14,7 +14,14 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using HullMesh = CGAL::Surface_mesh<Point>;
 
-Eigen::Vector3d ToEigen(const Point& p) { return {p.x(), p.y(), p.z()}; }
+// p0 . (p1 x p2), exactly: six times the signed volume of the tetrahedron (origin, p0, p1, p2).
+CGAL::Exact_rational TripleProduct(const Point& p0, const Point& p1, const Point& p2) {
+  using Exact = CGAL::Exact_rational;
+  const Exact x0(p0.x()), y0(p0.y()), z0(p0.z());
+  const Exact x1(p1.x()), y1(p1.y()), z1(p1.z());
+  const Exact x2(p2.x()), y2(p2.y()), z2(p2.z());
+  return x0 * (y1 * z2 - z1 * y2) - y0 * (x1 * z2 - z1 * x2) + z0 * (x1 * y2 - y1 * x2);
+}
 
 }  // namespace
 
@@ -43,18 +50,21 @@ double ConvexHullVolume(const std::vector<Eigen::Vector3f>& points) {
 
   HullMesh hull;
   CGAL::convex_hull_3(input.begin(), input.end(), hull);
-  // Divergence theorem over the (triangular, outward) hull faces.
-  double volume = 0.0;
+  // Divergence theorem over the (outward) hull faces, summed exactly: CGAL lists the faces, and
+  // triangulates coplanar ones, in an order that depends on the process's memory layout, and a
+  // floating-point sum would change in its last digits with it (traits.csv differed between two
+  // runs of the same demo). The exact sum is the polytope's volume whatever the order.
+  CGAL::Exact_rational six_volume = 0;
   for (const HullMesh::Face_index face : hull.faces()) {
-    std::vector<Eigen::Vector3d> corners;
+    std::vector<Point> corners;
     for (const HullMesh::Vertex_index v : hull.vertices_around_face(hull.halfedge(face))) {
-      corners.push_back(ToEigen(hull.point(v)));
+      corners.push_back(hull.point(v));
     }
     for (size_t k = 1; k + 1 < corners.size(); ++k) {
-      volume += corners[0].dot(corners[k].cross(corners[k + 1])) / 6.0;
+      six_volume += TripleProduct(corners[0], corners[k], corners[k + 1]);
     }
   }
-  return std::abs(volume);
+  return std::abs(CGAL::to_double(six_volume) / 6.0);
 }
 
 }  // namespace avc::traits

@@ -143,6 +143,27 @@ TEST(ConvexHullVolume, CubeAndDegenerateSets) {
   EXPECT_EQ(ConvexHullVolume({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 3, 0}}), 0.0);
 }
 
+// CGAL lists the hull's faces in an order that depends on the process's memory layout; the
+// volume must not (traits.csv differed in its last digits between two runs of one demo).
+TEST(ConvexHullVolume, TheSameBitsWhateverTheCallHistoryAndPointOrder) {
+  std::vector<Eigen::Vector3f> blob;
+  uint32_t state = 12345;
+  const auto next = [&state] {
+    state = state * 1664525u + 1013904223u;
+    return static_cast<float>(state >> 8) / static_cast<float>(1u << 24) - 0.5f;
+  };
+  for (int k = 0; k < 4000; ++k) blob.emplace_back(0.1f * next(), 0.07f * next(), 0.2f * next());
+  const double first = ConvexHullVolume(blob);
+  for (int repeat = 0; repeat < 4; ++repeat) {
+    std::vector<Eigen::Vector3f> kept(blob.begin() + repeat, blob.end());  // other allocations
+    EXPECT_EQ(ConvexHullVolume(blob), first) << "call " << repeat;
+  }
+  std::vector<Eigen::Vector3f> reversed(blob.rbegin(), blob.rend());
+  EXPECT_EQ(ConvexHullVolume(reversed), first);
+  EXPECT_GT(first, 0.5 * 0.1 * 0.07 * 0.2);  // most of the box
+  EXPECT_LT(first, 0.1 * 0.07 * 0.2);
+}
+
 TEST(PlantTraits, EmptyAndBadMeshes) {
   const PlantTraits empty = MeasureTraits(geometry::Mesh{});
   EXPECT_EQ(empty.total_area, 0.0);
