@@ -56,6 +56,10 @@ TEST(OctreeBinary, HeadersThatDoNotMatchTheDataAreRefusedByName) {
   other_type.replace(other_type.find("id OcTree"), 9, "id ColorO");
   EXPECT_NE(error(other_type).find("map 'm': not an OctoMap binary (.bt) OcTree (type 'ColorO'"),
             std::string::npos);
+  std::string endless = bytes;
+  const size_t res_at = endless.find("res ") + 4;
+  endless.replace(res_at, endless.find('\n', res_at) - res_at, "inf");
+  EXPECT_NE(error(endless).find("not an OctoMap binary"), std::string::npos) << error(endless);
   std::string more_nodes = bytes;
   const size_t size_at = more_nodes.find("size ") + 5;
   more_nodes.insert(size_at, "1");
