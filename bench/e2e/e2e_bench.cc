@@ -17,9 +17,9 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "bench/leaf_figures.h"
 #include "bench/mvs/plant_organs.h"
 #include "bench/registry.h"
+#include "core/eval/leaf_figures.h"
 #include "core/geometry/mesh_io.h"
 #include "core/launch/child_process.h"
 #include "core/launch/find_program.h"
@@ -73,7 +73,7 @@ Json RunDemo(const RunSpec& spec, const fs::path& work_dir, double time_scale) {
   result["images"] = report["images"];
   result["calibrated"] = fs::exists(dir / "calibration-run");
   const Json evaluation = ReadJson(dir / "model/mesh_eval.json");
-  result["leaves"] = LeafFigures(evaluation);
+  result["leaves"] = eval::LeafFigures(evaluation);
   result["mesh_accuracy_mean_mm"] = 1e3 * evaluation["accuracy"]["mean"].get<double>();
   // The scan's traits against the same measures of the simulated plant (issue 9's targets).
   const Json traits = ReadJson(dir / "model/traits.json");

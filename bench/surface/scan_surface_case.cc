@@ -3,11 +3,11 @@
 #include <chrono>
 #include <nlohmann/json.hpp>
 
-#include "bench/leaf_figures.h"
 #include "bench/mvs/isolated_run.h"
 #include "bench/mvs/plant_organs.h"
 #include "bench/surface/leaf_connectivity.h"
 #include "core/dataset/dataset_reader.h"
+#include "core/eval/leaf_figures.h"
 #include "core/eval/metrics.h"
 #include "core/eval/report_json.h"
 #include "core/geometry/mesh_io.h"
@@ -32,7 +32,7 @@ nlohmann::json SurfaceAndScore(const messages::ClustersContent& clusters,
   eval::EvalOptions evaluation;
   evaluation.thresholds = {0.002};  // precision and recall at 2 mm, as `avc bench e2e`
   nlohmann::json figures =
-      LeafFigures(eval::ToJson(eval::EvaluateMesh(truth, surface.mesh, evaluation)));
+      eval::LeafFigures(eval::ToJson(eval::EvaluateMesh(truth, surface.mesh, evaluation)));
   // The traits as a scan reports them, against the same measures of the truth.
   figures["total_area_ratio"] = surface.traits.total_area / expected.leaf_area;
   figures["height_ratio"] = surface.traits.height / expected.height;

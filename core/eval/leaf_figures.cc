@@ -1,10 +1,12 @@
-#include "bench/leaf_figures.h"
+#include "core/eval/leaf_figures.h"
+
+#include <fmt/format.h>
 
 #include <cmath>
 
 #include "core/geometry/mesh.h"
 
-namespace avc::bench {
+namespace avc::eval {
 namespace {
 
 using Json = nlohmann::json;
@@ -43,4 +45,12 @@ Json LeafFigures(const Json& evaluation) {
       {"fscore_2mm", precision + recall > 0 ? 2 * precision * recall / (precision + recall) : 0}};
 }
 
-}  // namespace avc::bench
+std::string FormatLeafFigures(const Json& figures) {
+  return fmt::format(
+      "the leaves: {:.1f} % of their area, precision {:.1f} % and recall {:.1f} % at 2 mm, mean "
+      "error {:.2f} mm\n",
+      100 * figures.at("area_ratio").get<double>(), 100 * figures.at("precision_2mm").get<double>(),
+      100 * figures.at("recall_2mm").get<double>(), figures.at("accuracy_mean_mm").get<double>());
+}
+
+}  // namespace avc::eval
