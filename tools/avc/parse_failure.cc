@@ -5,10 +5,13 @@
 namespace avc::cli {
 namespace {
 
-const CLI::App* DeepestSelected(const CLI::App& root) {
-  const CLI::App* command = &root;
-  while (!command->get_subcommands().empty()) command = command->get_subcommands().front();
-  return command;
+// root, then each subcommand selected under the previous one.
+std::vector<const CLI::App*> SelectedChain(const CLI::App& root) {
+  std::vector<const CLI::App*> chain = {&root};
+  while (!chain.back()->get_subcommands().empty()) {
+    chain.push_back(chain.back()->get_subcommands().front());
+  }
+  return chain;
 }
 
 // CLI11 reports a missing subcommand rather than the word it could not place (`avc typo`).
@@ -24,16 +27,14 @@ std::string Problem(const CLI::App& command, const CLI::Error& error) {
 
 std::string SelectedCommandPath(const CLI::App& root) {
   std::string path = "avc";
-  for (const CLI::App* command = &root; !command->get_subcommands().empty();) {
-    command = command->get_subcommands().front();
-    path += " " + command->get_name();
-  }
+  const std::vector<const CLI::App*> chain = SelectedChain(root);
+  for (size_t k = 1; k < chain.size(); ++k) path += " " + chain[k]->get_name();
   return path;
 }
 
 std::string ParseFailureMessage(const CLI::App* root, const CLI::Error& error) {
   const std::string path = SelectedCommandPath(*root);
-  return path + ": " + Problem(*DeepestSelected(*root), error) + "\nRun '" + path +
+  return path + ": " + Problem(*SelectedChain(*root).back(), error) + "\nRun '" + path +
          " --help' for its options.\n";
 }
 
