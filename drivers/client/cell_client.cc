@@ -42,8 +42,10 @@ CellClient::CellClient(bus::Bus& bus, bus::EventLoop& loop, std::string name,
         if (ack.status != avc::ack_t::STATUS_ACCEPTED) final_acks_[ack.request_id] = ack;
       }));
   subscriptions_.push_back(bus_.Subscribe<avc::heartbeat_t>(
-      channels::kHeartbeat,
-      [this](const avc::heartbeat_t& beat, const bus::RxInfo&) { health_[beat.service] = beat; }));
+      channels::kHeartbeat, [this](const avc::heartbeat_t& beat, const bus::RxInfo&) {
+        health_[beat.service] = beat;
+        ++heartbeats_heard_[beat.service];
+      }));
   subscriptions_.push_back(bus_.Subscribe<avc::robot_state_t>(
       channels::kRobotState, [this](const avc::robot_state_t& state, const bus::RxInfo&) {
         for (int i = 0; i < 6; ++i) last_joints_[i] = state.q[i];
@@ -95,6 +97,16 @@ void CellClient::WaitFreshState(std::chrono::milliseconds timeout) {
     throw std::runtime_error("no fresh ROBOT_STATE and TURNTABLE_STATE within " +
                              std::to_string(timeout.count()) + " ms");
   }
+}
+
+bool CellClient::WaitReadyAgain(const std::string& service, std::chrono::milliseconds timeout) {
+  const int64_t heard_before = heartbeats_heard_[service];
+  return loop_.RunUntil(
+      [&] {
+        return heartbeats_heard_[service] > heard_before &&
+               health_[service].state == avc::heartbeat_t::STATE_READY;
+      },
+      timeout);
 }
 
 std::string CellClient::NextId(const std::string& what) {
@@ -172,14 +184,33 @@ double CellClient::TurntableGoto(double angle_rad, std::chrono::milliseconds tim
 
 CapturedView CellClient::Capture(const std::string& image_id, int8_t encoding,
                                  std::chrono::milliseconds timeout) {
+  const int64_t deadline_us = MonotonicMicros() + static_cast<int64_t>(timeout.count()) * 1000;
+  const auto remaining = [&] {
+    return std::chrono::milliseconds(
+        std::max<int64_t>((deadline_us - MonotonicMicros()) / 1000, 0));
+  };
   avc::capture_request_t request{};
-  request.request_id = NextId("capture");
   request.image_id = image_id;
   request.encoding = encoding;
-  const int64_t sent_wall = WallMicros();
+  int64_t sent_wall = 0;
   CapturedView view;
-  view.request_to_done_s = SendUntilDone(
-      request.request_id, [&] { bus_.Publish(channels::kCaptureRequest, request); }, timeout);
+  for (;;) {
+    request.request_id = NextId("capture");
+    sent_wall = WallMicros();
+    try {
+      view.request_to_done_s = SendUntilDone(
+          request.request_id, [&] { bus_.Publish(channels::kCaptureRequest, request); },
+          remaining());
+      break;
+    } catch (const CommandRefused& refusal) {
+      const std::string camera = final_acks_.at(request.request_id).service;
+      if (!WaitReadyAgain(camera, remaining())) {
+        throw std::runtime_error(fmt::format(
+            "{} refused image {} and was not READY again within {} ms of the first request: {}",
+            camera, image_id, timeout.count(), refusal.what()));
+      }
+    }
+  }
   const auto arrived = [&] {
     return std::find_if(products_.begin(), products_.end(), [&](const auto& entry) {
       return entry.first.rfind("images/" + image_id + ".", 0) == 0;

@@ -37,7 +37,7 @@ namespace avc::client {
 
 // A command the service refused (unreachable target, outside the safety envelope, bad value):
 // the cell is fine, the request was not. Other failures (timeouts, FAILED) are plain
-// std::runtime_error.
+// std::runtime_error. A camera's refusal is never one: see Capture.
 class CommandRefused : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
@@ -73,6 +73,10 @@ class CellClient {
   double SetPlantKeepOut(const kinematics::PlantKeepOut& keep_out,
                          std::chrono::milliseconds timeout);
   double TurntableGoto(double angle_rad, std::chrono::milliseconds timeout);
+  // A camera refuses while it connects (a restarted driver), reconnects or stops: that is the
+  // cell's fault, not the view's, so the capture is asked again under a new request id once
+  // the camera heartbeats READY anew, until `timeout`; then it throws std::runtime_error (never
+  // CommandRefused, which a planner takes as "skip this view").
   CapturedView Capture(const std::string& image_id, int8_t encoding,
                        std::chrono::milliseconds timeout);
 
@@ -98,6 +102,8 @@ class CellClient {
   // from the first send.
   double SendUntilDone(const std::string& id, const std::function<void()>& send,
                        std::chrono::milliseconds timeout);
+  // Runs the loop until `service` heartbeats READY after now; false when `timeout` passed.
+  bool WaitReadyAgain(const std::string& service, std::chrono::milliseconds timeout);
 
   bus::Bus& bus_;
   bus::EventLoop& loop_;
@@ -107,6 +113,7 @@ class CellClient {
   std::string id_prefix_;                         // name-session-
   std::map<std::string, avc::ack_t> final_acks_;  // by request id: DONE, FAILED or REFUSED
   std::map<std::string, avc::heartbeat_t> health_;
+  std::map<std::string, int64_t> heartbeats_heard_;                        // by service
   std::map<std::string, std::pair<products::Product, int64_t>> products_;  // by name; rx time
   kinematics::JointVector last_joints_ = kinematics::JointVector::Zero();
   Eigen::Isometry3d last_flange_pose_ = Eigen::Isometry3d::Identity();

@@ -2,8 +2,9 @@
 // simulated cell and every real driver (separate processes on the real bus), each image kept in
 // the scan directory and scan.json. A restarted orchestrator (new client, record read back from
 // disk) gets the views it already has from their files with no capture, recaptures only a
-// deleted one, refuses a plan that contradicts the record, and skips a view the arm refuses
-// (outside its limits or inside the plant's keep-out).
+// deleted one, refuses a plan that contradicts the record, skips a view the arm refuses
+// (outside its limits or inside the plant's keep-out) and waits for a camera driver that was
+// killed and restarted.
 
 #include <gtest/gtest.h>
 
@@ -99,6 +100,10 @@ TEST(ScanCaptureMultiproc, KeepsEveryImageAndResumesWithoutCapturingAgain) {
           },
           {}, [&](const std::string& line) { progress.push_back(line); });
       for (int n = 0; n < 3; ++n) {
+        // A crashed camera driver, restarted as `avc up` would: it refuses captures until it has
+        // its camera again, which must delay the view, never skip it (a skipped view left a gap
+        // in the image ids and changed the plan).
+        if (n == 2) cell.KillAndRestart("avc-camera");
         const std::optional<cv::Mat> mask = capture(views[n]);
         ASSERT_TRUE(mask.has_value());
         EXPECT_EQ(mask->cols, kWidth);
@@ -137,6 +142,7 @@ TEST(ScanCaptureMultiproc, KeepsEveryImageAndResumesWithoutCapturingAgain) {
       EXPECT_EQ(c.sha256.size(), 64u);
     }
     EXPECT_EQ(record.captures[1].image_id, "view_0001");
+    EXPECT_EQ(record.captures[2].image_id, "view_0002") << "the camera's restart cost no view";
     fs::remove(scan_dir / record.captures[1].file);
 
     client::CellClient client(bus, loop, "avc-orchestrator", cell.key());

@@ -1,6 +1,7 @@
 // avc-camera's node on an in-process bus with a frame-source camera whose pictures and faults the
 // test controls: acks, delivered image products, re-encoding, busy retries, a lost camera and its
-// re-opening, refusals, repeats and shutdown.
+// re-opening, refusals, repeats and shutdown; and the cell client's capture against it, which
+// waits out a camera that is still connecting instead of taking its refusal as the view's.
 
 #include "drivers/camera/camera_node.h"
 
@@ -19,6 +20,7 @@
 #include "core/bus/heartbeat.h"
 #include "core/products/product_receiver.h"
 #include "drivers/camera/frame_source_camera.h"
+#include "drivers/client/cell_client.h"
 
 namespace avc::camera_driver {
 namespace {
@@ -299,6 +301,44 @@ TEST(CameraNode, ShutdownFailsWhatIsStillQueued) {
     finals_for_q1 += ack.request_id == "q1" && ack.status != avc::ack_t::STATUS_ACCEPTED;
   }
   EXPECT_EQ(finals_for_q1, 1u);
+}
+
+// A restarted camera driver refuses captures until it has its camera ("camera not ready"). The
+// scan once took that refusal as "this view is unreachable" and skipped the view (a chaos trial
+// that killed avc-camera lost view_0010): the client must ask again once the camera is READY.
+TEST(CameraNode, TheClientsCaptureWaitsForACameraThatIsStillConnecting) {
+  Harness h(/*open_failures=*/4);
+  client::CellClient client(h.bus, h.loop, "test-orchestrator");
+  const client::CapturedView view =
+      client.Capture("view_0010", avc::image_t::ENCODING_JPEG, milliseconds(5000));
+  EXPECT_EQ(view.image.image_id, "view_0010");
+  EXPECT_EQ(view.image.data, h.jpeg);
+  int refused = 0, done = 0;
+  for (const avc::ack_t& ack : h.acks) {
+    refused += ack.status == avc::ack_t::STATUS_REFUSED;
+    done += ack.status == avc::ack_t::STATUS_DONE;
+  }
+  EXPECT_GE(refused, 1) << "the camera was not refusing: the test did not test the wait";
+  EXPECT_EQ(done, 1);
+  EXPECT_EQ(h.faults.captures, 1) << "one picture";
+}
+
+TEST(CameraNode, ACameraThatNeverComesBackIsACellFailureNotARefusedView) {
+  Harness h(/*open_failures=*/1000000);
+  client::CellClient client(h.bus, h.loop, "test-orchestrator");
+  try {
+    client.Capture("view_0003", avc::image_t::ENCODING_JPEG, milliseconds(600));
+    ADD_FAILURE() << "a camera that never connects cannot capture";
+  } catch (const client::CommandRefused& refusal) {
+    ADD_FAILURE() << "taken as a refused view: " << refusal.what();
+  } catch (const std::runtime_error& error) {
+    const std::string what = error.what();
+    EXPECT_NE(what.find("avc-camera refused image view_0003 and was not READY again within 600 ms"),
+              std::string::npos)
+        << what;
+    EXPECT_NE(what.find("camera not ready"), std::string::npos) << what;
+  }
+  EXPECT_EQ(h.faults.captures, 0);
 }
 
 }  // namespace
