@@ -262,7 +262,7 @@ class ScanRun {
   void CaptureViews() {
     EnsureCalibration();
     PowerArm();  // after a restart of the arm's driver or controller
-    const sim::CellTruth model = planner::CellModelFromCalibration(*calibration_);
+    const cell::CellModel model = planner::CellModelFromCalibration(*calibration_);
     ScanCapture capture(
         cell_, dir_, record_, [this] { Persist(); }, options_.capture,
         [this](const std::string& line) { Report(line); });

@@ -13,6 +13,7 @@
 #include "core/calibration/pipeline/calibrate_cell.h"
 #include "drivers/client/cell_client.h"
 #include "services/calibrator/calibration_collector.h"
+#include "sim/scene/chessboard_scene.h"
 #include "sim/cell/view_selection.h"
 #include "sim/emulators/cell/simulated_cell.h"
 

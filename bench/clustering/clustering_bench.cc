@@ -5,10 +5,10 @@
 
 #include "bench/clustering/clustering_comparison.h"
 #include "bench/clustering/clustering_table.h"
+#include "bench/clustering/table2_sets.h"
 #include "bench/registry.h"
 #include "core/cluster/cluster_plant.h"
 #include "core/cluster/scoring.h"
-#include "core/cluster/table2_sets.h"
 
 namespace avc::bench {
 

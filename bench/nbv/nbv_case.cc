@@ -7,14 +7,14 @@
 #include <iostream>
 
 #include "bench/mvs/plant_organs.h"
+#include "bench/nbv/baseline_views.h"
+#include "bench/nbv/information_gain.h"
 #include "bench/nbv/simulated_capture.h"
 #include "bench/nbv/view_set_build.h"
 #include "bench/summary.h"
 #include "core/eval/coverage.h"
 #include "core/eval/coverage_oracle.h"
 #include "services/planner/active_vision.h"
-#include "services/planner/baseline_views.h"
-#include "services/planner/information_gain.h"
 #include "sim/dataset/render_dataset.h"
 
 namespace avc::bench {

@@ -40,12 +40,12 @@ calibration::CalibrationDataset CollectCalibrationDataset(
   cell.TurntableGoto(0, milliseconds(60000));
   cell.WaitFreshState(milliseconds(5000));
 
-  sim::ChessboardSpec spec;
+  calibration::ChessboardSpec spec;
   spec.inner_cols = options.board.cols;
   spec.inner_rows = options.board.rows;
   spec.square_m = options.board.square_size;
-  spec.T_world_board =
-      sim::ChessboardSpec::DefaultBoardPose(spec.inner_cols, spec.inner_rows, spec.square_m);
+  spec.T_world_board = calibration::ChessboardSpec::DefaultBoardPose(
+      spec.inner_cols, spec.inner_rows, spec.square_m);
   const CalibrationPlan plan =
       PlanCalibration(options.planning_cell, spec, cell.last_joints(), options.plan);
 

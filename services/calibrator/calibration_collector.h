@@ -22,7 +22,7 @@ struct CollectOptions {
   CalibrationPlanOptions plan;
   // Rough cell geometry used to plan the poses (where the table is from the robot, the nominal
   // hand-eye and camera); the calibration itself does not depend on it.
-  sim::CellTruth planning_cell = sim::NominalCell();
+  cell::CellModel planning_cell = cell::NominalCell();
 };
 
 // Throws std::runtime_error naming the step that failed (a service not ready, a refused or

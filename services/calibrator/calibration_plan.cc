@@ -6,7 +6,7 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "sim/cell/view_selection.h"
+#include "core/cell/view_selection.h"
 
 namespace avc::calibrator {
 namespace {
@@ -15,7 +15,7 @@ constexpr double kDeg = std::numbers::pi / 180;
 
 // Every corner of the board (at table angle `angle`) inside the nominal image with a margin of
 // a tenth of the image.
-bool SeesWholeBoard(const sim::CellTruth& nominal, const sim::ChessboardSpec& board,
+bool SeesWholeBoard(const cell::CellModel& nominal, const calibration::ChessboardSpec& board,
                     const Eigen::Isometry3d& T_table_cam, double angle) {
   camera::Camera camera;
   camera.intrinsics = nominal.intrinsics;
@@ -23,7 +23,7 @@ bool SeesWholeBoard(const sim::CellTruth& nominal, const sim::ChessboardSpec& bo
       T_table_cam.inverse() * Eigen::Isometry3d(Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitZ()));
   const double margin_x = 0.1 * nominal.intrinsics.width;
   const double margin_y = 0.1 * nominal.intrinsics.height;
-  for (const Eigen::Vector3d& corner : sim::ChessboardCorners(board)) {
+  for (const Eigen::Vector3d& corner : calibration::ChessboardCorners(board)) {
     const auto pixel = camera.Project(board.T_world_board * corner);
     if (!pixel || pixel->x() < margin_x || pixel->y() < margin_y ||
         pixel->x() > nominal.intrinsics.width - margin_x ||
@@ -40,14 +40,15 @@ Eigen::Isometry3d Rolled(const Eigen::Isometry3d& T_table_cam, double roll) {
 
 }  // namespace
 
-CalibrationPlan PlanCalibration(const sim::CellTruth& nominal, const sim::ChessboardSpec& board,
+CalibrationPlan PlanCalibration(const cell::CellModel& nominal,
+                                const calibration::ChessboardSpec& board,
                                 const kinematics::JointVector& start,
                                 const CalibrationPlanOptions& options) {
   const Eigen::Vector3d target =
       board.T_world_board * Eigen::Vector3d(0.5 * (board.inner_cols - 1) * board.square_m,
                                             0.5 * (board.inner_rows - 1) * board.square_m, 0);
   const Eigen::Vector3d base = nominal.T_base_table.inverse().translation();
-  const double robot_azimuth = sim::RobotAzimuth(nominal);
+  const double robot_azimuth = cell::RobotAzimuth(nominal);
   CalibrationPlan plan;
   kinematics::JointVector current = start;
   // Candidates in a fixed order that varies elevation, azimuth, roll and distance together.
@@ -60,11 +61,12 @@ CalibrationPlan PlanCalibration(const sim::CellTruth& nominal, const sim::Chessb
     const double azimuth = robot_azimuth + azimuths[i % 7] * kDeg;
     const double roll = rolls[i % 5] * kDeg;
     const double distance = distances[i % 4];
-    const Eigen::Isometry3d T_table_cam = Rolled(
-        sim::LookAtPose(sim::ViewpointOnSphere(target, distance, elevation, azimuth), target, base),
-        roll);
+    const Eigen::Isometry3d T_table_cam =
+        Rolled(cell::LookAtPose(cell::ViewpointOnSphere(target, distance, elevation, azimuth),
+                                target, base),
+               roll);
     if (!SeesWholeBoard(nominal, board, T_table_cam, 0)) continue;
-    const auto q = sim::JointsForCameraPose(nominal, T_table_cam, current);
+    const auto q = cell::JointsForCameraPose(nominal, T_table_cam, current);
     if (!q || !kinematics::JointPathAllowed(options.envelope, nominal.dh, current, *q)) continue;
     plan.hand_eye.push_back(*q);
     current = *q;
@@ -83,15 +85,15 @@ CalibrationPlan PlanCalibration(const sim::CellTruth& nominal, const sim::Chessb
   for (const double distance : {0.55, 0.6, 0.65, 0.7, 0.8}) {
     for (const double elevation : {75.0, 70.0, 80.0, 65.0}) {
       const Eigen::Isometry3d T_table_cam =
-          sim::LookAtPose(sim::ViewpointOnSphere(Eigen::Vector3d::Zero(), distance,
-                                                 elevation * kDeg, robot_azimuth),
-                          Eigen::Vector3d::Zero(), base);
+          cell::LookAtPose(cell::ViewpointOnSphere(Eigen::Vector3d::Zero(), distance,
+                                                   elevation * kDeg, robot_azimuth),
+                           Eigen::Vector3d::Zero(), base);
       bool sees_all = true;
       for (const double angle : plan.table_angles) {
         sees_all = sees_all && SeesWholeBoard(nominal, board, T_table_cam, angle);
       }
       if (!sees_all) continue;
-      const auto q = sim::JointsForCameraPose(nominal, T_table_cam, current);
+      const auto q = cell::JointsForCameraPose(nominal, T_table_cam, current);
       if (q && kinematics::JointPathAllowed(options.envelope, nominal.dh, current, *q)) {
         plan.turntable_pose = *q;
         return plan;

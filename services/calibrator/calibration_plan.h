@@ -10,10 +10,10 @@
 #include <optional>
 #include <vector>
 
+#include "core/calibration/board/chessboard_spec.h"
+#include "core/cell/cell_model.h"
 #include "core/kinematics/dh_parameters.h"
 #include "core/kinematics/safety_envelope.h"
-#include "sim/cell/cell_truth.h"
-#include "sim/scene/chessboard_scene.h"
 
 namespace avc::calibrator {
 
@@ -31,7 +31,8 @@ struct CalibrationPlan {
 };
 
 // Throws std::runtime_error when fewer than the asked poses are reachable and fully visible.
-CalibrationPlan PlanCalibration(const sim::CellTruth& nominal, const sim::ChessboardSpec& board,
+CalibrationPlan PlanCalibration(const cell::CellModel& nominal,
+                                const calibration::ChessboardSpec& board,
                                 const kinematics::JointVector& start,
                                 const CalibrationPlanOptions& options);
 

@@ -8,12 +8,12 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "core/cell/view_selection.h"
 #include "core/kinematics/plant_keep_out.h"
 #include "core/ppr/proxy_bounds.h"
 #include "services/planner/framing.h"
 #include "services/planner/redundant_views.h"
 #include "services/planner/view_sphere_search.h"
-#include "sim/cell/view_selection.h"
 
 namespace avc::planner {
 namespace {
@@ -36,7 +36,7 @@ bool InImage(const camera::Camera& camera, const Eigen::Vector3d& point) {
 
 // What Algorithm 1 keeps while it runs: the views with their masks, the proxy, the joints.
 struct Run {
-  const sim::CellTruth& cell;
+  const cell::CellModel& cell;
   const CaptureFunction& capture;
   const ActiveVisionOptions& options;
   ActiveVisionResult result;
@@ -265,7 +265,7 @@ size_t ActiveVisionResult::KeptCount() const {
       std::count_if(views.begin(), views.end(), [](const PlannedView& v) { return v.kept; }));
 }
 
-ActiveVisionResult RunActiveVision(const sim::CellTruth& cell, const CaptureFunction& capture,
+ActiveVisionResult RunActiveVision(const cell::CellModel& cell, const CaptureFunction& capture,
                                    const ActiveVisionOptions& options,
                                    const StageFunction& on_stage, const ProxyFunction& on_proxy) {
   if (options.levels < 1 || options.levels > static_cast<int>(options.elevations_deg.size())) {
@@ -275,7 +275,7 @@ ActiveVisionResult RunActiveVision(const sim::CellTruth& cell, const CaptureFunc
   const auto stage = [&](ActiveVisionStage next) {
     if (on_stage) on_stage(next);
   };
-  Run run{cell, capture, options,  {},           {}, sim::StartJoints(cell),
+  Run run{cell, capture, options,  {},           {}, cell::StartJoints(cell),
           {},   stage,   on_proxy, options.reach};
   stage(ActiveVisionStage::kFrame);
   for (int level = 0; level < options.levels; ++level) run.InitialLevel(level);

@@ -112,7 +112,7 @@ using ProxyFunction = std::function<void(const ppr::PlantProxy& proxy)>;
 // Throws std::runtime_error naming the problem when no plant is found by the colour filter in a
 // framing frame or no view of the first height is reachable. `on_stage` (optional) hears each
 // stage as it starts, `on_proxy` (optional) each proxy update.
-ActiveVisionResult RunActiveVision(const sim::CellTruth& cell, const CaptureFunction& capture,
+ActiveVisionResult RunActiveVision(const cell::CellModel& cell, const CaptureFunction& capture,
                                    const ActiveVisionOptions& options = {},
                                    const StageFunction& on_stage = {},
                                    const ProxyFunction& on_proxy = {});

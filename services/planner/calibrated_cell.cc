@@ -4,11 +4,11 @@
 
 namespace avc::planner {
 
-sim::CellTruth CellModelFromCalibration(const calibration::CellCalibration& calibration) {
+cell::CellModel CellModelFromCalibration(const calibration::CellCalibration& calibration) {
   if (const std::string problem = calibration.Validate(); !problem.empty()) {
     throw std::invalid_argument("calibration not usable for planning: " + problem);
   }
-  sim::CellTruth cell;
+  cell::CellModel cell;
   cell.dh = calibration.dh;
   cell.T_base_table = calibration.T_base_table;
   cell.turntable_axis_table = Eigen::Vector3d::UnitZ();

@@ -6,11 +6,11 @@
 // the turntable axis with its origin on it, so the axis is z through the origin.
 
 #include "core/calibration/cell/cell_calibration.h"
-#include "sim/cell/cell_truth.h"
+#include "core/cell/cell_model.h"
 
 namespace avc::planner {
 
 // Throws std::invalid_argument naming the bad field when the calibration is not usable.
-sim::CellTruth CellModelFromCalibration(const calibration::CellCalibration& calibration);
+cell::CellModel CellModelFromCalibration(const calibration::CellCalibration& calibration);
 
 }  // namespace avc::planner

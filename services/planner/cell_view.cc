@@ -4,7 +4,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "sim/cell/view_selection.h"
+#include "core/cell/view_selection.h"
 
 namespace avc::planner {
 namespace {
@@ -20,7 +20,7 @@ double ExteriorDistance(const Eigen::AlignedBox3d& box, const Eigen::Vector3d& p
 
 }  // namespace
 
-std::optional<CellView> RealiseView(const sim::CellTruth& cell, const Eigen::Vector3d& eye_world,
+std::optional<CellView> RealiseView(const cell::CellModel& cell, const Eigen::Vector3d& eye_world,
                                     const Eigen::Vector3d& target_world,
                                     const Eigen::AlignedBox3d& keep_out,
                                     const kinematics::JointVector& current,
@@ -36,20 +36,20 @@ std::optional<CellView> RealiseView(const sim::CellTruth& cell, const Eigen::Vec
   // The eye's azimuth about the axis in the table frame grows with the turntable angle: find
   // the angle that puts it at the arm's azimuth (plus an offset).
   const Eigen::Vector3d& centre = cell.turntable_centre_table;
-  const double at_zero = AzimuthAbout(sim::TableFromWorld(cell, 0) * eye_world, centre);
-  const double arm = sim::RobotAzimuth(cell);
+  const double at_zero = AzimuthAbout(cell::TableFromWorld(cell, 0) * eye_world, centre);
+  const double arm = cell::RobotAzimuth(cell);
   for (const double offset : options.azimuth_offsets) {
     const double angle = std::remainder(arm + offset - at_zero, 2 * M_PI);
-    const Eigen::Isometry3d T_table_world = sim::TableFromWorld(cell, angle);
-    const auto joints = sim::JointsLookingAt(cell, T_table_world * eye_world,
-                                             T_table_world * target_world, current);
+    const Eigen::Isometry3d T_table_world = cell::TableFromWorld(cell, angle);
+    const auto joints = cell::JointsLookingAt(cell, T_table_world * eye_world,
+                                              T_table_world * target_world, current);
     if (!joints || !kinematics::JointPathAllowed(options.envelope, cell.dh, current, *joints)) {
       continue;
     }
     CellView view;
     view.turntable_angle = angle;
     view.joints = *joints;
-    view.camera = sim::CameraAt(cell, *joints, angle);
+    view.camera = cell::CameraAt(cell, *joints, angle);
     view.centre_world = view.camera.T_cam_world.inverse().translation();
     return view;
   }

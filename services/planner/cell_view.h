@@ -14,9 +14,9 @@
 #include <vector>
 
 #include "core/camera/pinhole_camera.h"
+#include "core/cell/cell_model.h"
 #include "core/kinematics/dh_parameters.h"
 #include "core/kinematics/safety_envelope.h"
-#include "sim/cell/cell_truth.h"
 
 namespace avc::planner {
 
@@ -43,7 +43,7 @@ struct ReachOptions {
 
 // nullopt when no turntable angle lets the arm reach the view within the limits above. Throws
 // std::invalid_argument for non-finite points or an eye on the target.
-std::optional<CellView> RealiseView(const sim::CellTruth& cell, const Eigen::Vector3d& eye_world,
+std::optional<CellView> RealiseView(const cell::CellModel& cell, const Eigen::Vector3d& eye_world,
                                     const Eigen::Vector3d& target_world,
                                     const Eigen::AlignedBox3d& keep_out,
                                     const kinematics::JointVector& current,

@@ -16,7 +16,7 @@ std::pair<Eigen::Vector3d, Eigen::Vector3d> TangentBasis(const Eigen::Vector3d& 
 
 }  // namespace
 
-SphereSearchResult SearchViewSphere(const sim::CellTruth& cell, const ppr::PlantProxy& proxy,
+SphereSearchResult SearchViewSphere(const cell::CellModel& cell, const ppr::PlantProxy& proxy,
                                     const SurfacePatch& patch, const SphereSearch& search,
                                     const kinematics::JointVector& current,
                                     const ReachOptions& reach, const VisibilityOptions& visibility,

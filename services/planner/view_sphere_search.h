@@ -35,7 +35,7 @@ struct SphereSearchResult {
 // Higher is better; e.g. how many failing patches the view would see.
 using ViewRank = std::function<double(const CellView& view)>;
 
-SphereSearchResult SearchViewSphere(const sim::CellTruth& cell, const ppr::PlantProxy& proxy,
+SphereSearchResult SearchViewSphere(const cell::CellModel& cell, const ppr::PlantProxy& proxy,
                                     const SurfacePatch& patch, const SphereSearch& search,
                                     const kinematics::JointVector& current,
                                     const ReachOptions& reach, const VisibilityOptions& visibility,

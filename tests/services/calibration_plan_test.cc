@@ -12,6 +12,7 @@
 
 #include "sim/cell/cell_fixtures.h"
 #include "sim/cell/view_selection.h"
+#include "sim/scene/chessboard_scene.h"
 
 namespace avc::calibrator {
 namespace {

@@ -21,7 +21,6 @@
 #include "core/eval/report_text.h"
 #include "core/launch/find_program.h"
 #include "drivers/client/cell_client.h"
-#include "orchestrator/demo_cell.h"
 #include "orchestrator/scan_run.h"
 #include "services/calibrator/calibration_collector.h"
 #include "services/planner/cell_view.h"
@@ -29,6 +28,7 @@
 #include "sim/scene/plant.h"
 #include "tools/avc/bus_flags.h"
 #include "tools/avc/commands.h"
+#include "tools/avc/demo_cell.h"
 #include "tools/avc/planner_flags.h"
 #include "tools/avc/run_guarded.h"
 #include "tools/avc/scan_progress.h"
@@ -72,8 +72,8 @@ fs::path ChooseDemoDir(const DemoArgs& args) {
   return candidate;
 }
 
-orchestrator::DemoCellOptions CellOptions(const DemoArgs& args, const fs::path& work_dir) {
-  orchestrator::DemoCellOptions options;
+DemoCellOptions CellOptions(const DemoArgs& args, const fs::path& work_dir) {
+  DemoCellOptions options;
   options.avc_binary = launch::SelfExecutableDir() / "avc";
   options.work_dir = work_dir;
   options.bus = bus::ResolveBusOptions(args.bus, "avc-demo");
@@ -86,11 +86,11 @@ orchestrator::DemoCellOptions CellOptions(const DemoArgs& args, const fs::path& 
 // sim-calibration.toml) and returns the calibration file.
 fs::path CalibrateSimulatedCell(const DemoArgs& args, const fs::path& work_dir) {
   std::cerr << "calibrating the simulated cell over a chessboard (once; kept for later demos)\n";
-  orchestrator::DemoCellOptions options = CellOptions(args, work_dir);
+  DemoCellOptions options = CellOptions(args, work_dir);
   for (const char* arg : {"--chessboard", "9x6", "--samples", "4", "--background", "plain"}) {
     options.sim_args.push_back(arg);
   }
-  orchestrator::DemoCell cell(options);
+  DemoCell cell(options);
   bus::Bus bus(options.bus);
   bus::EventLoop loop;
   bus.AttachTo(loop);
@@ -151,17 +151,16 @@ int RunDemo(const DemoArgs& args) {
   } else {
     scene.mesh_file = args.mesh;
   }
-  orchestrator::WriteGroundTruthMesh(scene, calibration::LoadCalibration(calibration),
-                                     dir / "gt_mesh.ply");
+  WriteGroundTruthMesh(scene, calibration::LoadCalibration(calibration), dir / "gt_mesh.ply");
 
-  orchestrator::DemoCellOptions options = CellOptions(args, dir / "cell");
+  DemoCellOptions options = CellOptions(args, dir / "cell");
   if (args.mesh.empty()) {
     options.sim_args.insert(options.sim_args.end(), {"--plant", args.plant});
   } else {
     options.sim_args.insert(options.sim_args.end(), {"--mesh", fs::absolute(args.mesh).string()});
   }
   options.record_to = fs::absolute(dir / "scan.lcmlog");
-  orchestrator::DemoCell cell(options);
+  DemoCell cell(options);
   bus::Bus bus(options.bus);
   bus::EventLoop loop;
   bus.AttachTo(loop);

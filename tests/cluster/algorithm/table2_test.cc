@@ -4,9 +4,9 @@
 #include <cstring>
 #include <vector>
 
+#include "bench/clustering/table2_sets.h"
 #include "core/cluster/cluster_plant.h"
 #include "core/cluster/scoring.h"
-#include "core/cluster/table2_sets.h"
 
 namespace avc::cluster {
 namespace {

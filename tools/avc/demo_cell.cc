@@ -1,4 +1,4 @@
-#include "orchestrator/demo_cell.h"
+#include "tools/avc/demo_cell.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -12,7 +12,7 @@
 #include "core/geometry/mesh_io.h"
 #include "sim/scene/chessboard_scene.h"
 
-namespace avc::orchestrator {
+namespace avc::cli {
 namespace {
 
 namespace fs = std::filesystem;
@@ -105,4 +105,4 @@ void WriteGroundTruthMesh(const sim::RenderDatasetOptions& scene,
   geometry::WriteMeshPly(path, mesh);
 }
 
-}  // namespace avc::orchestrator
+}  // namespace avc::cli

@@ -1,4 +1,4 @@
-#include "services/planner/baseline_views.h"
+#include "bench/nbv/baseline_views.h"
 
 #include <cmath>
 

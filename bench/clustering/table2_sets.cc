@@ -1,4 +1,4 @@
-#include "core/cluster/table2_sets.h"
+#include "bench/clustering/table2_sets.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>

@@ -1,11 +1,11 @@
-#include "services/planner/information_gain.h"
+#include "bench/nbv/information_gain.h"
 
 #include <octomap/OcTree.h>
 #include <tbb/parallel_for.h>
 
 #include <cmath>
 
-#include "services/planner/baseline_views.h"
+#include "bench/nbv/baseline_views.h"
 
 namespace avc::planner {
 namespace {

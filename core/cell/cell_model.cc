@@ -1,4 +1,4 @@
-#include "sim/cell/cell_truth.h"
+#include "core/cell/cell_model.h"
 
 #include <fmt/format.h>
 
@@ -8,10 +8,9 @@
 #include "core/geometry/rigid_transform.h"
 #include "core/kinematics/forward_kinematics.h"
 
-namespace avc::sim {
-namespace {}  // namespace
+namespace avc::cell {
 
-std::string CellTruth::Validate() const {
+std::string CellModel::Validate() const {
   if (std::string error = dh.Validate(); !error.empty()) return "robot " + error;
   if (std::string error = geometry::RigidTransformProblem(T_base_table, "T_base_table", 1e-9);
       !error.empty())
@@ -27,8 +26,8 @@ std::string CellTruth::Validate() const {
   return {};
 }
 
-CellTruth NominalCell() {
-  CellTruth cell;
+CellModel NominalCell() {
+  CellModel cell;
   cell.dh = kinematics::NominalUr5();
   Eigen::Isometry3d T_table_base = Eigen::Isometry3d::Identity();
   T_table_base.translation() << -0.55, 0.0, 0.2;
@@ -45,14 +44,14 @@ CellTruth NominalCell() {
   return cell;
 }
 
-Eigen::Isometry3d TableFromWorld(const CellTruth& cell, double turntable_angle) {
+Eigen::Isometry3d TableFromWorld(const CellModel& cell, double turntable_angle) {
   const Eigen::Vector3d& centre = cell.turntable_centre_table;
   return Eigen::Translation3d(centre) *
          Eigen::AngleAxisd(turntable_angle, cell.turntable_axis_table) *
          Eigen::Translation3d(-centre);
 }
 
-camera::Camera CameraAt(const CellTruth& cell, const kinematics::JointVector& q,
+camera::Camera CameraAt(const CellModel& cell, const kinematics::JointVector& q,
                         double turntable_angle) {
   if (std::string error = kinematics::ValidateJoints(q); !error.empty()) {
     throw std::invalid_argument("CameraAt: " + error);
@@ -68,4 +67,4 @@ camera::Camera CameraAt(const CellTruth& cell, const kinematics::JointVector& q,
   return camera;
 }
 
-}  // namespace avc::sim
+}  // namespace avc::cell

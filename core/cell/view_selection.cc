@@ -1,4 +1,4 @@
-#include "sim/cell/view_selection.h"
+#include "core/cell/view_selection.h"
 
 #include <cmath>
 #include <numbers>
@@ -7,7 +7,7 @@
 
 #include "core/kinematics/inverse_kinematics.h"
 
-namespace avc::sim {
+namespace avc::cell {
 namespace {
 
 constexpr double kMinimumViewDistance = 1e-6;
@@ -43,7 +43,7 @@ Eigen::Isometry3d LookAtPose(const Eigen::Vector3d& camera_centre_table,
   return T_table_cam;
 }
 
-std::optional<kinematics::JointVector> JointsLookingAt(const CellTruth& cell,
+std::optional<kinematics::JointVector> JointsLookingAt(const CellModel& cell,
                                                        const Eigen::Vector3d& camera_centre_table,
                                                        const Eigen::Vector3d& target_table,
                                                        const kinematics::JointVector& current) {
@@ -53,7 +53,7 @@ std::optional<kinematics::JointVector> JointsLookingAt(const CellTruth& cell,
       current);
 }
 
-std::optional<kinematics::JointVector> JointsForCameraPose(const CellTruth& cell,
+std::optional<kinematics::JointVector> JointsForCameraPose(const CellModel& cell,
                                                            const Eigen::Isometry3d& T_table_cam,
                                                            const kinematics::JointVector& current) {
   if (std::string error = cell.Validate(); !error.empty()) {
@@ -78,7 +78,7 @@ Eigen::Vector3d ViewpointOnSphere(const Eigen::Vector3d& target, double distance
                                              std::sin(elevation));
 }
 
-std::optional<ReachableView> FirstReachableView(const CellTruth& cell,
+std::optional<ReachableView> FirstReachableView(const CellModel& cell,
                                                 const Eigen::Vector3d& target, double distance,
                                                 double elevation, double azimuth,
                                                 const kinematics::JointVector& current) {
@@ -95,16 +95,16 @@ std::optional<ReachableView> FirstReachableView(const CellTruth& cell,
   return std::nullopt;
 }
 
-double RobotAzimuth(const CellTruth& cell) {
+double RobotAzimuth(const CellModel& cell) {
   const Eigen::Vector3d base =
       cell.T_base_table.inverse().translation() - cell.turntable_centre_table;
   return std::atan2(base.y(), base.x());
 }
 
-kinematics::JointVector StartJoints(const CellTruth& cell) {
+kinematics::JointVector StartJoints(const CellModel& cell) {
   kinematics::JointVector q;
   q << RobotAzimuth(cell), -1.2, 1.6, -1.9, -1.5708, 0;
   return q;
 }
 
-}  // namespace avc::sim
+}  // namespace avc::cell

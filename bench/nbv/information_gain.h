@@ -13,6 +13,7 @@
 #include "core/ppr/plant_proxy.h"
 #include "services/planner/active_vision.h"
 #include "services/planner/cell_view.h"
+#include "sim/cell/cell_truth.h"
 
 namespace avc::planner {
 

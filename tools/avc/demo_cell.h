@@ -18,7 +18,7 @@
 #include "core/launch/child_process.h"
 #include "sim/dataset/render_dataset.h"
 
-namespace avc::orchestrator {
+namespace avc::cli {
 
 struct DemoCellOptions {
   std::filesystem::path avc_binary;   // the `avc` executable
@@ -60,4 +60,4 @@ void WriteGroundTruthMesh(const sim::RenderDatasetOptions& scene,
                           const calibration::CellCalibration& calibration,
                           const std::filesystem::path& path);
 
-}  // namespace avc::orchestrator
+}  // namespace avc::cli

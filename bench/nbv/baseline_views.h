@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "services/planner/cell_view.h"
+#include "sim/cell/cell_truth.h"
 
 namespace avc::planner {
 

@@ -1,0 +1,76 @@
+# The layers (README, Layout): production code (core, drivers, services, orchestrator) never
+# depends on the simulator. Checked at configure time over every target's link closure, so a
+# wrong dependency fails the build where it is written, not in review.
+#
+# avc_check_layers(FOLDERS <folder>... FORBIDDEN <regex>)
+#   Fails configuration when a target defined under one of the folders (relative to the top
+#   source directory) links, directly or through other targets, a target whose name matches the
+#   regex. The message names the target, the forbidden one and the chain between them.
+
+function(_avc_layer_targets dir out)
+  get_property(targets DIRECTORY ${dir} PROPERTY BUILDSYSTEM_TARGETS)
+  get_property(subdirs DIRECTORY ${dir} PROPERTY SUBDIRECTORIES)
+  foreach(sub IN LISTS subdirs)
+    _avc_layer_targets(${sub} sub_targets)
+    list(APPEND targets ${sub_targets})
+  endforeach()
+  set(${out} ${targets} PARENT_SCOPE)
+endfunction()
+
+# The targets `target` links directly (our own targets only; $<LINK_ONLY:x> unwrapped).
+function(_avc_layer_links target out)
+  get_target_property(type ${target} TYPE)
+  set(links "")
+  if(NOT type STREQUAL "INTERFACE_LIBRARY")
+    get_target_property(direct ${target} LINK_LIBRARIES)
+    if(direct)
+      list(APPEND links ${direct})
+    endif()
+  endif()
+  get_target_property(interface ${target} INTERFACE_LINK_LIBRARIES)
+  if(interface)
+    list(APPEND links ${interface})
+  endif()
+  set(result "")
+  foreach(link IN LISTS links)
+    string(REGEX REPLACE "^\\$<LINK_ONLY:(.*)>$" "\\1" link "${link}")
+    if(TARGET ${link} AND NOT link MATCHES "::")
+      list(APPEND result ${link})
+    endif()
+  endforeach()
+  list(REMOVE_DUPLICATES result)
+  set(${out} ${result} PARENT_SCOPE)
+endfunction()
+
+function(avc_check_layers)
+  cmake_parse_arguments(ARG "" "FORBIDDEN" "FOLDERS" ${ARGN})
+  foreach(folder IN LISTS ARG_FOLDERS)
+    if(NOT EXISTS ${PROJECT_SOURCE_DIR}/${folder})
+      continue()
+    endif()
+    _avc_layer_targets(${PROJECT_SOURCE_DIR}/${folder} targets)
+    foreach(target IN LISTS targets)
+      # Breadth-first over the link closure, remembering how each target was reached.
+      set(queue ${target})
+      set(seen ${target})
+      set(via_${target} "${target}")
+      while(queue)
+        list(POP_FRONT queue current)
+        _avc_layer_links(${current} links)
+        foreach(link IN LISTS links)
+          if(link IN_LIST seen)
+            continue()
+          endif()
+          list(APPEND seen ${link})
+          set(via_${link} "${via_${current}} -> ${link}")
+          if(link MATCHES "${ARG_FORBIDDEN}")
+            message(FATAL_ERROR
+              "Layer violation: ${target} (${folder}/) depends on ${link}, which production "
+              "code must not use (${via_${link}}). See README, Layout.")
+          endif()
+          list(APPEND queue ${link})
+        endforeach()
+      endwhile()
+    endforeach()
+  endforeach()
+endfunction()
