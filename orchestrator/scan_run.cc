@@ -12,12 +12,12 @@
 #include "core/camera/camera_io.h"
 #include "core/kinematics/plant_keep_out.h"
 #include "core/kinematics/row_major_pose.h"
-#include "core/traits/traits_writer.h"
+#include "core/stage/stage_files.h"
 #include "core/util/clock.h"
 #include "core/util/file_io.h"
 #include "orchestrator/report_html.h"
 #include "orchestrator/scan_planner_settings.h"
-#include "orchestrator/scan_processing.h"
+#include "orchestrator/scan_stage_jobs.h"
 #include "services/planner/calibrated_cell.h"
 
 namespace avc::orchestrator {
@@ -42,32 +42,13 @@ ScanState StateOfStage(planner::ActiveVisionStage stage) {
   throw std::logic_error("unknown active vision stage");
 }
 
-// What the surfacer made of the clusters (the report's "surface"), and what it warned of.
-nlohmann::ordered_json SurfaceSummary(const surface::SurfaceReport& made) {
-  return {{"clusters", made.clusters},
-          {"points_used", made.used_points},
-          {"points_left_out", made.points_left_out},
-          {"cells", made.cells},
-          {"cells_split_by_phase3", made.cell_islands},
-          {"image_views", made.image_views},
-          {"grown_vertices", made.grown_vertices},
-          {"stitch_faces", made.stitching.faces},
-          {"area_m2_after_phase",
-           {{"1", made.area_triangulated},
-            {"2", made.area_grown},
-            {"3", made.area_modified},
-            {"4", made.area}}},
-          {"faces", made.faces},
-          {"components", made.components},
-          {"warnings", made.warnings}};
-}
-
 // One run of the scan: the record, the machine and what the steps hand each other.
 class ScanRun {
  public:
-  ScanRun(client::CellClient& cell, const ScanRunOptions& options,
+  ScanRun(client::CellClient& cell, stage::StageClient& stages, const ScanRunOptions& options,
           const std::function<void(const ScanProgress&)>& progress)
       : cell_(cell),
+        stages_(stages),
         options_(options),
         progress_(progress),
         dir_(options.scan_dir),
@@ -310,20 +291,54 @@ class ScanRun {
     if (options_.on_kept_cameras) options_.on_kept_cameras(record_.scan_id, cameras);
   }
 
+  // Sends the stage its files, waits for its answer, and only then writes what it made into
+  // `into`: a stage that fails or answers wrongly leaves nothing of its answer behind.
+  void RunStage(const StageJobSpec& job, const std::vector<std::string>& settings,
+                const fs::path& into) {
+    stage::StageRequest request;
+    request.service = job.service;
+    request.stage = job.stage;
+    request.scan_id = record_.scan_id;
+    request.settings = settings;
+    request.files = stage::PackFiles(job.folder, job.inputs);
+    request.timeout = options_.stage_timeout;
+    request.silence_timeout = options_.stage_silence_timeout;
+    Report(fmt::format("{}: {} files ({:.1f} MB) to {}", job.stage, request.files.size(),
+                       stage::FileBytes(request.files) * 1e-6, job.service));
+    const stage::StageAnswer answer = stages_.Run(
+        request, [&](const std::string& line) { Report(fmt::format("{}: {}", job.service, line)); },
+        [this] { return StopRequested(); });
+    stage::UnpackFiles(answer.files, into);
+    record_.options["stages"][job.stage] = {{"service", job.service},
+                                            {"request_id", answer.request_id},
+                                            {"config_sha256", answer.config_sha256},
+                                            {"stage_s", answer.stage_seconds},
+                                            {"wall_s", answer.wall_seconds},
+                                            {"bytes_sent", answer.bytes_sent},
+                                            {"bytes_received", answer.bytes_received},
+                                            {"sends", answer.sends}};
+    Persist();
+  }
+
   void Build() {
-    BuildModel(dir_, model_dir_, options_.build, [this](const std::string& line) { Report(line); });
+    // A new build replaces the whole model: nothing of an earlier one may mix with it.
+    fs::remove_all(model_dir_);
+    fs::create_directories(model_dir_);
+    RunStage(BuildJob(dir_), options_.build_settings, model_dir_);
   }
 
-  void MergeCluster() { clusters_ = ClusterModel(model_dir_, options_.cluster); }
+  void MergeCluster() { RunStage(ClusterJob(model_dir_), {}, model_dir_); }
 
-  void Surface() {
-    if (!clusters_) MergeCluster();  // resumed here: the same files give the same clusters
-    surface_ = SurfaceModel(*clusters_, model_dir_);
-  }
+  void Surface() { RunStage(SurfaceJob(model_dir_), {}, model_dir_); }
 
+  // The surface stage measured the traits with the mesh; a scan resumed here without them (a
+  // model from an older AVC) surfaces again.
   void Traits() {
-    if (!surface_) Surface();
-    traits::WriteTraitFiles(surface_->traits, model_dir_.string());
+    if (!fs::exists(model_dir_ / "traits.json")) Surface();
+    const nlohmann::json traits = nlohmann::json::parse(ReadFile(model_dir_ / "traits.json"));
+    Report(fmt::format("traits: {:.1f} cm2 over {} clusters, {:.1f} cm tall",
+                       1e4 * traits.at("total_area_m2").get<double>(), traits.at("clusters").size(),
+                       1e2 * traits.at("height_m").get<double>()));
   }
 
   void WriteReport() {
@@ -339,19 +354,24 @@ class ScanRun {
     int kept = 0;
     for (const CaptureRecord& c : record_.captures) kept += c.kept;
     report["images"] = {{"captured", record_.captures.size()}, {"kept", kept}};
-    report["planner"] = record_.options;
+    nlohmann::json planner = record_.options;
+    planner.erase("stages");
+    report["planner"] = planner;
+    report["stages"] = record_.options.value("stages", nlohmann::json::object());
     report["build"] = nlohmann::json::parse(ReadFile(model_dir_ / "build.json"));
     report["traits"] = nlohmann::json::parse(ReadFile(model_dir_ / "traits.json"));
-    if (surface_) report["surface"] = SurfaceSummary(surface_->report);
+    report["surface"] = nlohmann::json::parse(ReadFile(model_dir_ / "surface.json"));
     report["files"] = {"images/",          "cameras.json",       "colmap/",
                        kCalibrationName,   "model/ppr.bt",       "model/points.ply",
-                       "model/merged.ply", "model/clusters.ply", "model/mesh.ply",
-                       "model/traits.csv", "model/traits.json"};
+                       "model/merged.ply", "model/clusters.ply", "model/clusters.lcm",
+                       "model/mesh.ply",   "model/surface.json", "model/traits.csv",
+                       "model/traits.json"};
     WriteFileAtomically(dir_ / "report.json", report.dump(2) + "\n");
     WriteReportHtml(dir_);
   }
 
   client::CellClient& cell_;
+  stage::StageClient& stages_;
   ScanRunOptions options_;  // a copy: a resumed scan takes its planner settings from its record
   const std::function<void(const ScanProgress&)>& progress_;
   fs::path dir_;
@@ -362,15 +382,14 @@ class ScanRun {
   ScanStateMachine machine_;
   ScanOutcome outcome_;
   std::optional<calibration::CellCalibration> calibration_;
-  std::optional<messages::ClustersContent> clusters_;
-  std::optional<surfacer::SurfacerResult> surface_;
 };
 
 }  // namespace
 
-ScanOutcome RunScan(client::CellClient& cell, const ScanRunOptions& options,
+ScanOutcome RunScan(client::CellClient& cell, stage::StageClient& stages,
+                    const ScanRunOptions& options,
                     const std::function<void(const ScanProgress&)>& progress) {
-  ScanRun run(cell, options, progress);
+  ScanRun run(cell, stages, options, progress);
   return run.Run();
 }
 

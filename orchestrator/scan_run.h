@@ -11,6 +11,8 @@
 //   BUILD             masks, plant proxy and MVS on the kept views   -> model/ppr.bt, points.ply
 //   MERGE_CLUSTER     merging and Algorithm 2 from those files        -> model/clusters.ply
 //   SURFACE, TRAITS   Algorithm 3 and the traits                     -> model/mesh.ply, traits.*
+//                     each a job for its stage service over the bus (scan_stage_jobs.h): the
+//                     scan sends the files, the service sends back what it made
 //   REPORT            report.json: phases and their times, views, notes, the model's figures
 //
 // The scan directory: scan.json, calibration.yaml, images/, cameras.json and colmap/ (the kept
@@ -30,11 +32,10 @@
 #include <vector>
 
 #include "core/camera/camera_io.h"
+#include "core/stage/stage_client.h"
 #include "drivers/client/cell_client.h"
 #include "orchestrator/scan_capture.h"
 #include "orchestrator/scan_record.h"
-#include "services/builder/reconstruction.h"
-#include "services/clusterer/merge_and_cluster.h"
 #include "services/planner/active_vision.h"
 
 namespace avc::orchestrator {
@@ -48,8 +49,11 @@ struct ScanRunOptions {
   // refuses to change those the caller chose on purpose, named here by their keys there.
   std::set<std::string> planner_settings_given;
   ScanCaptureOptions capture;
-  builder::ReconstructOptions build;
-  clusterer::ClustererOptions cluster;
+  // "section.field=value" overrides of avc-builder's own configuration for this scan's build.
+  std::vector<std::string> build_settings;
+  // The longest a stage may take, and the longest its service may go without a heartbeat.
+  std::chrono::milliseconds stage_timeout{std::chrono::minutes(30)};
+  std::chrono::milliseconds stage_silence_timeout{std::chrono::seconds(15)};
   std::chrono::milliseconds ready_timeout{30000};
   // Polled between steps and when a step fails: true (e.g. after SIGTERM) pauses the scan
   // instead of faulting it. Optional.
@@ -79,11 +83,13 @@ struct ScanOutcome {
   std::filesystem::path scan_dir;
 };
 
-// Runs or resumes the scan in options.scan_dir. `progress` hears every state change and
-// capture. Never throws for a failing step (the outcome says FAULT and why); throws
-// std::runtime_error only when the scan directory itself cannot be used (unreadable scan.json,
-// no calibration given for a new scan).
-ScanOutcome RunScan(client::CellClient& cell, const ScanRunOptions& options,
+// Runs or resumes the scan in options.scan_dir: the cell through `cell`, the reconstruction
+// through `stages` (both on the same bus and loop). `progress` hears every state change,
+// capture and line of a stage's own progress. Never throws for a failing step (the outcome says
+// FAULT and why); throws std::runtime_error only when the scan directory itself cannot be used
+// (unreadable scan.json, no calibration given for a new scan).
+ScanOutcome RunScan(client::CellClient& cell, stage::StageClient& stages,
+                    const ScanRunOptions& options,
                     const std::function<void(const ScanProgress&)>& progress = {});
 
 }  // namespace avc::orchestrator

@@ -16,11 +16,12 @@ constexpr int kStateCount = static_cast<int>(S::kAborted) + 1;
 const std::string kRobot = "avc-robot";
 const std::string kTurntable = "avc-turntable";
 const std::string kCamera = "avc-camera";
+const std::string kBuilder = "avc-builder";
+const std::string kClusterer = "avc-clusterer";
+const std::string kSurfacer = "avc-surfacer";
 
 std::vector<StateRow> BuildTable() {
-  // The processing states (BUILD to REPORT) run the builder, clusterer and surfacer libraries in
-  // the scan's own process (orchestrator/scan_run.h), so only the devices are waited for; when
-  // they move onto the avc-builder/-clusterer/-surfacer services, those names go here.
+  // The processing states are jobs for the stage services over the bus (scan_stage_jobs.h).
   const std::vector<std::string> cell = {kRobot, kTurntable, kCamera};
   // Rows in enum order, columns aligned by hand. `next` holds each state's own successors; the
   // edges all working states share (interruptions, resume) are added below from the `working`
@@ -45,11 +46,11 @@ std::vector<StateRow> BuildTable() {
      "score the proxy's surface patches; capture next-best views"},
     {S::kPruneViews,      "PRUNE_VIEWS",      true,   6, {},            {S::kBuild},
      "drop redundant views"},
-    {S::kBuild,           "BUILD",            true,   7, {},            {S::kMergeCluster},
+    {S::kBuild,           "BUILD",            true,   7, {kBuilder},    {S::kMergeCluster},
      "masks, plant proxy and multi-view stereo from the kept views"},
-    {S::kMergeCluster,    "MERGE_CLUSTER",    true,   8, {},            {S::kSurface},
+    {S::kMergeCluster,    "MERGE_CLUSTER",    true,   8, {kClusterer},  {S::kSurface},
      "merge points into the proxy and cluster them"},
-    {S::kSurface,         "SURFACE",          true,   9, {},            {S::kTraits},
+    {S::kSurface,         "SURFACE",          true,   9, {kSurfacer},   {S::kTraits},
      "triangulate the clusters into one mesh"},
     {S::kTraits,          "TRAITS",           true,  10, {},            {S::kReport},
      "measure area, height and leaf angles from the mesh"},

@@ -13,9 +13,9 @@
 #include "core/calibration/pipeline/calibrate_cell.h"
 #include "drivers/client/cell_client.h"
 #include "services/calibrator/calibration_collector.h"
-#include "sim/scene/chessboard_scene.h"
 #include "sim/cell/view_selection.h"
 #include "sim/emulators/cell/simulated_cell.h"
+#include "sim/scene/chessboard_scene.h"
 
 namespace avc::bench {
 namespace {
@@ -41,6 +41,7 @@ nlohmann::json RunCellCalibration(const CellCalibrationRunOptions& options) {
   cell_options.extra_sim_args = {
       "--chessboard", "9x6",   "--samples",     std::to_string(options.samples),
       "--background", "plain", "--table-sigma", fmt::format("{}", options.table_sigma_deg)};
+  cell_options.stages = false;  // a calibration reconstructs nothing
   CellProcesses cell(cell_options);
 
   bus::Bus bus(ClientBusOptions(cell_options, "avc-bench"));

@@ -175,6 +175,11 @@ CellProcesses::CellProcesses(const CellProcessOptions& options)
                fmt::format("{}", options.table_speed_deg_s), "--key", key_file}));
   Start("avc-camera", fixed({avc, "camera", "--port", fmt::format("ptpip:127.0.0.1:{}", camera),
                              "--no-usb-watch"}));
+  if (options.stages) {
+    for (const char* stage : {"builder", "clusterer", "surfacer"}) {
+      Start(fmt::format("avc-{}", stage), fixed({avc, stage}));
+    }
+  }
 }
 
 void CellProcesses::Start(const std::string& name, std::function<std::vector<std::string>()> argv) {

@@ -2,7 +2,8 @@
 
 // The simulated cell as the separate processes a lab runs: `avc sim cell` (all emulators) plus
 // the three drivers (`avc robot`, `avc turntable`, `avc camera`) pointed at it over the real
-// protocols, talking LCM on the given URLs, and optionally a recorder (`avc record`). Used by
+// protocols, the three reconstruction stages (`avc builder`, `avc clusterer`, `avc surfacer`),
+// talking LCM on the given URLs, and optionally a recorder (`avc record`). Used by
 // `avc bench devices`, `avc bench chaos` and the end-to-end tests. Ports are picked free at start;
 // logs land in work_dir. The drivers obey only commands signed with the cell's key,
 // work_dir/cell.key (made at the first start).
@@ -35,6 +36,8 @@ struct CellProcessOptions {
   std::vector<std::string> extra_sim_args;
   // Also run `avc record` for the cell ("avc-record"), into work_dir/recordings/.
   bool record = false;
+  // Run the stage services a scan's reconstruction needs (avc-builder, -clusterer, -surfacer).
+  bool stages = true;
 };
 
 class CellProcesses {
@@ -48,8 +51,9 @@ class CellProcesses {
   CellProcesses& operator=(const CellProcesses&) = delete;
 
   // SIGKILLs the named process ("avc-robot", "avc-turntable", "avc-camera", "avc-sim",
-  // "avc-record"), as a crash would, and starts it again the same way (its log goes on; a
-  // recorder starts a new recording). Throws std::invalid_argument for an unknown name.
+  // "avc-builder", "avc-clusterer", "avc-surfacer", "avc-record"), as a crash would, and starts it
+  // again the same way (its log goes on; a recorder starts a new recording). Throws
+  // std::invalid_argument for an unknown name.
   void KillAndRestart(const std::string& name);
 
   // Names of processes that exited (with how), empty while all run.

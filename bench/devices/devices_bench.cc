@@ -71,6 +71,7 @@ ModeResult RunMode(const DevicesBenchArgs& args, double time_scale,
   result.time_scale = time_scale;
   CellProcessOptions options = LocalCellOptions(args.port, "bench", time_scale, work);
   options.triangles = args.triangles;
+  options.stages = false;  // the devices alone
   CellProcesses cell(options);
 
   bus::Bus bus(ClientBusOptions(options, "avc-bench"));

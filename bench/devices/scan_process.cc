@@ -53,4 +53,20 @@ bool WaitForCaptures(const fs::path& scan_dir, size_t count, launch::ChildProces
   return false;
 }
 
+bool WaitForScanState(const fs::path& scan_dir, const std::string& state,
+                      launch::ChildProcess& scan, std::chrono::milliseconds timeout) {
+  constexpr std::chrono::milliseconds kPoll(50);
+  for (auto waited = std::chrono::milliseconds(0); waited < timeout; waited += kPoll) {
+    try {
+      if (orchestrator::StateName(orchestrator::LoadScanRecord(scan_dir).state) == state) {
+        return true;
+      }
+    } catch (const std::exception&) {
+      // not written yet
+    }
+    if (scan.WaitFor(kPoll).has_value()) return false;  // it ended first
+  }
+  return false;
+}
+
 }  // namespace avc::bench

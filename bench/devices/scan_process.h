@@ -43,4 +43,10 @@ bool WaitForCaptures(const std::filesystem::path& scan_dir, size_t count,
                      launch::ChildProcess& scan,
                      std::chrono::milliseconds timeout = std::chrono::milliseconds(120000));
 
+// Polls scan.json until the scan is in `state` (a state name, e.g. "BUILD"). False when the scan
+// ended first or the timeout passed.
+bool WaitForScanState(const std::filesystem::path& scan_dir, const std::string& state,
+                      launch::ChildProcess& scan,
+                      std::chrono::milliseconds timeout = std::chrono::milliseconds(120000));
+
 }  // namespace avc::bench

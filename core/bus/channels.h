@@ -38,6 +38,8 @@ inline constexpr std::string_view kProductVoxelMap = "PRODUCT/VOXEL_MAP";
 inline constexpr std::string_view kProductBench = "PRODUCT/BENCH";
 inline constexpr std::string_view kProductMvsPoints = "PRODUCT/MVS_POINTS";
 inline constexpr std::string_view kProductClusters = "PRODUCT/CLUSTERS";
+inline constexpr std::string_view kProductStageJob = "PRODUCT/STAGE_JOB";
+inline constexpr std::string_view kProductStageResult = "PRODUCT/STAGE_RESULT";
 // Prefix shared by every product channel.
 inline constexpr std::string_view kProductPrefix = "PRODUCT/";
 
@@ -68,6 +70,8 @@ inline constexpr std::array kAll = {kHeartbeat,
                                     kProductVoxelMap,
                                     kProductBench,
                                     kProductMvsPoints,
-                                    kProductClusters};
+                                    kProductClusters,
+                                    kProductStageJob,
+                                    kProductStageResult};
 
 }  // namespace avc::channels

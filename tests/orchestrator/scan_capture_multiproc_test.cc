@@ -68,6 +68,7 @@ TEST(ScanCaptureMultiproc, KeepsEveryImageAndResumesWithoutCapturingAgain) {
   options.width = kWidth;
   options.height = kHeight;
   options.png = true;
+  options.stages = false;  // captures only
   bench::CellProcesses cell(options);
 
   sim::RenderDatasetOptions model_options;

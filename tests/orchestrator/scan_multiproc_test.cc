@@ -189,6 +189,13 @@ TEST(ScanMultiproc, PausedKilledAndResumedScanFinishesWithEveryImageOnce) {
                        [&](const avc::orchestrator_state_t& s) { return s.state == name; });
   };
   EXPECT_TRUE(heard("BUILD") && heard("SURFACE") && heard("REPORT"));
+  // The state goes on being published while avc-builder computes, with its own progress.
+  const auto build_states =
+      std::count_if(states.begin(), states.end(), [](const auto& s) { return s.state == "BUILD"; });
+  EXPECT_GE(build_states, 3) << "ORCH_STATE not republished during BUILD";
+  EXPECT_TRUE(std::any_of(states.begin(), states.end(), [](const avc::orchestrator_state_t& s) {
+    return s.state == "BUILD" && s.detail.find("avc-builder: ") != std::string::npos;
+  })) << "the builder's own progress never shown";
 
   ExpectFinishedScan(scan_dir, cell, 2);
   const ScanRecord done = LoadScanRecord(scan_dir);
@@ -198,6 +205,26 @@ TEST(ScanMultiproc, PausedKilledAndResumedScanFinishesWithEveryImageOnce) {
   EXPECT_NE(std::find(phases.begin(), phases.end(), "ACTIVE_VISION"), phases.end());
   EXPECT_EQ(phases.back(), "REPORT");
   EXPECT_TRUE(cell.Exited().empty()) << cell.LogTails();
+
+  // One pipeline: `avc reconstruct` offline on the scan's images and cameras writes the bytes
+  // the stage services wrote over the bus.
+  const fs::path offline = dir.path() / "offline";
+  launch::SpawnSpec reconstruct;
+  reconstruct.argv = {testing::Executable("avc").string(),
+                      "reconstruct",
+                      "--dataset",
+                      scan_dir.string(),
+                      "--output",
+                      offline.string()};
+  reconstruct.log_file = (dir.path() / "reconstruct.log").string();
+  launch::ChildProcess offline_run = launch::ChildProcess::Spawn(reconstruct);
+  const auto offline_status = offline_run.WaitFor(milliseconds(240000));
+  ASSERT_TRUE(offline_status && WIFEXITED(*offline_status) && WEXITSTATUS(*offline_status) == 0)
+      << testing::ReadFile(dir.path() / "reconstruct.log");
+  for (const char* file : {"points.ply", "ppr.bt", "clusters.ply", "mesh.ply", "traits.csv"}) {
+    EXPECT_EQ(testing::ReadFile(offline / file), testing::ReadFile(scan_dir / "model" / file))
+        << file << " differs between `avc reconstruct` and the scan's stage services";
+  }
 }
 
 // No cell answering: the scan stops with a fault that names every missing service and says how
@@ -243,10 +270,14 @@ TEST(ScanMultiproc, DevicesKilledDuringTheScanAreRestartedAndTheScanFinishes) {
   const bus::BusOptions bus_options = bus::ResolveBusOptions({}, "scan-kill-test");
   bench::CellProcesses cell(TestCell(bus_options, dir.path()));
   const fs::path log = dir.path() / "scan.log";
-  // Which process dies after how many recorded captures.
+  // Which process dies after how many recorded captures; then avc-builder while it has the
+  // scan's build job (the other stages take too little time here to be caught reliably: the
+  // chaos bench kills them at random).
   const std::vector<std::pair<size_t, std::string>> kills = {
       {3, "avc-robot"}, {6, "avc-camera"}, {9, "avc-turntable"}};
+  const std::vector<std::pair<std::string, std::string>> stage_kills = {{"BUILD", "avc-builder"}};
   size_t next_kill = 0;
+  size_t next_stage_kill = 0;
   int runs = 0;
   std::optional<int> status;
   while (runs < 6) {
@@ -259,6 +290,11 @@ TEST(ScanMultiproc, DevicesKilledDuringTheScanAreRestartedAndTheScanFinishes) {
       cell.KillAndRestart(kills[next_kill].second);
       ++next_kill;
     }
+    while (next_kill == kills.size() && next_stage_kill < stage_kills.size() &&
+           bench::WaitForScanState(scan_dir, stage_kills[next_stage_kill].first, scan)) {
+      cell.KillAndRestart(stage_kills[next_stage_kill].second);
+      ++next_stage_kill;
+    }
     status = scan.WaitFor(milliseconds(240000));
     ASSERT_TRUE(status.has_value()) << "scan did not finish\n" << testing::ReadFile(log);
     ASSERT_TRUE(WIFEXITED(*status)) << launch::DescribeWaitStatus(*status);
@@ -270,7 +306,9 @@ TEST(ScanMultiproc, DevicesKilledDuringTheScanAreRestartedAndTheScanFinishes) {
       << "not finished after " << runs << " runs\n"
       << testing::ReadFile(log) << cell.LogTails();
   EXPECT_EQ(next_kill, kills.size()) << "the scan finished before every kill";
-  std::printf("[ measured ] %d scan runs for %zu device crashes\n", runs, kills.size());
+  EXPECT_EQ(next_stage_kill, stage_kills.size()) << "the scan finished before every stage kill";
+  std::printf("[ measured ] %d scan runs for %zu device and %zu stage crashes\n", runs,
+              kills.size(), stage_kills.size());
   ExpectFinishedScan(scan_dir, cell, kills.size());
   EXPECT_TRUE(cell.Exited().empty()) << cell.LogTails();
 }

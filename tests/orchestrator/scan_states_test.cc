@@ -186,16 +186,18 @@ TEST(ScanStates, RestoredMachineResumesAtItsPersistedState) {
 }
 
 TEST(ScanStates, RequiredServices) {
-  // The devices for the states that move or capture; the processing runs in the scan's process.
+  // The devices for the states that move or capture; each processing stage its own service.
   using V = std::vector<std::string>;
   const V cell = {"avc-robot", "avc-turntable", "avc-camera"};
   for (S state :
        {S::kCheckDevices, S::kCalibrate, S::kFrame, S::kInitialCapture, S::kActiveVision}) {
     EXPECT_EQ(RequiredServices(state), cell) << StateName(state);
   }
-  for (S state :
-       {S::kIdle, S::kLoadCalibration, S::kPruneViews, S::kBuild, S::kMergeCluster, S::kSurface,
-        S::kTraits, S::kReport, S::kDone, S::kPaused, S::kFault, S::kAborted}) {
+  EXPECT_EQ(RequiredServices(S::kBuild), V{"avc-builder"});
+  EXPECT_EQ(RequiredServices(S::kMergeCluster), V{"avc-clusterer"});
+  EXPECT_EQ(RequiredServices(S::kSurface), V{"avc-surfacer"});
+  for (S state : {S::kIdle, S::kLoadCalibration, S::kPruneViews, S::kTraits, S::kReport, S::kDone,
+                  S::kPaused, S::kFault, S::kAborted}) {
     EXPECT_TRUE(RequiredServices(state).empty()) << StateName(state);
   }
 }

@@ -12,6 +12,9 @@
 #include <vector>
 
 #include "core/bus/service_runtime.h"
+#include "core/stage/stage_names.h"
+#include "core/stage/stage_server.h"
+#include "services/builder/build_step.h"
 #include "services/builder/builder_node.h"
 #include "tools/avc/bus_flags.h"
 #include "tools/avc/commands.h"
@@ -74,6 +77,9 @@ int RunBuilder(BuilderArgs args) {
   }
   bus::ServiceRuntime runtime(options.service, args.bus);
   builder::BuilderNode node(runtime.bus(), runtime.loop(), runtime.heartbeat(), options);
+  // A scan's build stage (`avc scan` sends its images and cameras as a job).
+  stage::StageServer stages(runtime.bus(), runtime.loop(), options.service, stage::kBuildStage,
+                            builder::BuildStageHandler(options.reconstruct));
   return runtime.Run();
 }
 

@@ -7,6 +7,9 @@
 #include <string>
 
 #include "core/bus/service_runtime.h"
+#include "core/stage/stage_names.h"
+#include "core/stage/stage_server.h"
+#include "services/clusterer/cluster_step.h"
 #include "services/clusterer/clusterer_node.h"
 #include "tools/avc/bus_flags.h"
 #include "tools/avc/cluster_cli.h"
@@ -32,6 +35,9 @@ int RunClusterer(ClustererArgs args) {
   }
   bus::ServiceRuntime runtime(options.service, args.bus);
   clusterer::ClustererNode node(runtime.bus(), runtime.loop(), runtime.heartbeat(), options);
+  // A scan's cluster stage (`avc scan` sends the build's points and proxy as a job).
+  stage::StageServer stages(runtime.bus(), runtime.loop(), options.service, stage::kClusterStage,
+                            clusterer::ClusterStageHandler(options.clustering));
   return runtime.Run();
 }
 

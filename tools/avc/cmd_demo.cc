@@ -20,6 +20,7 @@
 #include "core/eval/leaf_figures.h"
 #include "core/eval/report_text.h"
 #include "core/launch/find_program.h"
+#include "core/stage/stage_client.h"
 #include "drivers/client/cell_client.h"
 #include "orchestrator/scan_run.h"
 #include "services/calibrator/calibration_collector.h"
@@ -166,6 +167,7 @@ int RunDemo(const DemoArgs& args) {
   bus.AttachTo(loop);
   loop.QuitOnTerminationSignals();
   client::CellClient client(bus, loop, "avc-scan", cell.key());
+  stage::StageClient stages(bus, loop, "avc-scan");
 
   orchestrator::ScanRunOptions scan;
   scan.scan_dir = dir;
@@ -178,7 +180,7 @@ int RunDemo(const DemoArgs& args) {
     broadcast.PublishKeptCameras(id, cameras);
   };
   const orchestrator::ScanOutcome outcome =
-      orchestrator::RunScan(client, scan, [&](const auto& p) { broadcast(p); });
+      orchestrator::RunScan(client, stages, scan, [&](const auto& p) { broadcast(p); });
   std::cerr << "\n";
   const int code = ReportScanOutcome(outcome);
   if (outcome.state != orchestrator::ScanState::kDone) {

@@ -8,17 +8,16 @@
 
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 
 #include "core/dataset/dataset_reader.h"
-#include "core/surface/surface_images_io.h"
+#include "core/util/file_io.h"
 #include "services/builder/build_report.h"
 #include "services/builder/option_overrides.h"
 #include "services/builder/reconstruction.h"
 #include "services/builder/reconstruction_output.h"
-#include "services/clusterer/clusters_ply.h"
-#include "services/clusterer/merge_and_cluster.h"
-#include "services/surfacer/plant_base.h"
-#include "services/surfacer/surface_clusters.h"
+#include "services/clusterer/cluster_step.h"
+#include "services/surfacer/surface_step.h"
 #include "tools/avc/cluster_cli.h"
 #include "tools/avc/commands.h"
 #include "tools/avc/run_guarded.h"
@@ -80,31 +79,22 @@ int RunReconstruct(const ReconstructArgs& args) {
   std::cout << builder::BuildReportToText(report);
   size_t written = files.size();
   if (reconstruction.merged.size() > 0) {
-    // Clustering (paper §3.2) of the merged points, as the clusterer service would.
-    const messages::ClustersContent clusters = clusterer::ClusterMerged(
-        reconstruction.merged, static_cast<int64_t>(reconstruction.points.size()), {}, "points",
-        "ppr");
-    std::cout << DescribeClusters(clusters) << "\n";
-    if (clusters.problem.empty()) {
-      clusterer::WriteClustersPly(output / "clusters.ply", clusters);
-      ++written;
-      // Surfacing (paper §4) of the clusters and the plant's traits, as the surfacer would.
-      // Phase 2 grows the cells where the views' plant masks see leaf.
-      const surface::SurfaceImages images = surface::SurfaceImagesOf(set);
-      surfacer::SurfacerOptions surfacing;  // plant height from the soil, else the proxy's base
-      surfacing.traits.ground_z = surfacer::PlantGroundZ(builder::SoilZ(reconstruction.soil),
-                                                         reconstruction.proxy.ToMvsBounds());
-      const surfacer::SurfacerResult surface =
-          surfacer::SurfaceClusters(clusters, surfacing, &images);
-      if (surface.problem.empty()) {
-        surfacer::WriteSurfacerFiles(surface, output);  // mesh.ply, traits.csv, traits.json
-        written += 3;
-        std::cout << fmt::format("surface: {} faces in {} pieces, {:.1f} cm^2\n",
-                                 surface.mesh.faces.size(), surface.report.components,
-                                 1e4 * surface.traits.total_area);
-      } else {
-        std::cout << "no surface: " << surface.problem << "\n";
-      }
+    // Clustering (paper §3.2) and surfacing (§4) on the files just written, with the code
+    // avc-clusterer and avc-surfacer run for a scan: the same files give the same bytes offline
+    // and over the bus. Phase 2 grows the cells where the views' plant masks see leaf.
+    try {
+      const messages::ClustersContent clusters = clusterer::ClusterModel(output, output, {});
+      std::cout << DescribeClusters(clusters) << "\n";
+      written += 2;  // clusters.ply, clusters.lcm
+      surfacer::SurfaceModel(output, output);
+      written += 4;  // mesh.ply, traits.csv, traits.json, surface.json
+      const nlohmann::json surface = nlohmann::json::parse(ReadFile(output / "surface.json"));
+      const nlohmann::json traits = nlohmann::json::parse(ReadFile(output / "traits.json"));
+      std::cout << fmt::format(
+          "surface: {} faces in {} pieces, {:.1f} cm^2\n", surface.at("faces").get<int64_t>(),
+          surface.at("components").get<int64_t>(), 1e4 * traits.at("total_area_m2").get<double>());
+    } catch (const std::runtime_error& error) {
+      std::cout << "no surface: " << error.what() << "\n";
     }
   }
   std::cout << fmt::format("wrote {} files to {}\n", written, output.string());

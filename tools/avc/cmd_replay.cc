@@ -8,9 +8,9 @@
 #include "core/record/builtin_nodes.h"
 #include "core/record/replay.h"
 #include "core/util/log.h"
-#include "orchestrator/scan_replay_node.h"
 #include "tools/avc/commands.h"
 #include "tools/avc/run_guarded.h"
+#include "tools/avc/scan_replay_node.h"
 
 namespace avc::cli {
 namespace {
@@ -47,7 +47,7 @@ int RunReplay(const ReplayArgs& args) {
   log::SetProcessName("avc-replay");
   record::NodeRegistry registry;
   record::RegisterBuiltinNodes(registry);
-  orchestrator::RegisterScanReplayNode(registry);
+  RegisterScanReplayNode(registry);
   if (args.list_nodes) {
     PrintNodes(registry);
     return 0;

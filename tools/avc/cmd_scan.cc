@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "core/bus/bus.h"
+#include "core/stage/stage_client.h"
 #include "drivers/client/cell_client.h"
 #include "orchestrator/scan_planner_settings.h"
 #include "orchestrator/scan_run.h"
@@ -83,13 +84,14 @@ int RunScanCommand(const ScanArgs& args) {
   loop.QuitOnTerminationSignals();
   options.stop_requested = [&loop] { return loop.quitting(); };
   client::CellClient cell(bus, loop, "avc-scan", SenderKey(args.auth, bus.cell()));
+  stage::StageClient stages(bus, loop, "avc-scan");
 
   ScanStateBroadcast broadcast(bus, loop);
   options.on_kept_cameras = [&broadcast](const std::string& id, const auto& cameras) {
     broadcast.PublishKeptCameras(id, cameras);
   };
   const orchestrator::ScanOutcome outcome =
-      orchestrator::RunScan(cell, options, [&](const auto& p) { broadcast(p); });
+      orchestrator::RunScan(cell, stages, options, [&](const auto& p) { broadcast(p); });
   std::cerr << "\n";
   return ReportScanOutcome(outcome);
 }

@@ -7,6 +7,9 @@
 #include <string>
 
 #include "core/bus/service_runtime.h"
+#include "core/stage/stage_names.h"
+#include "core/stage/stage_server.h"
+#include "services/surfacer/surface_step.h"
 #include "services/surfacer/surfacer_node.h"
 #include "tools/avc/bus_flags.h"
 #include "tools/avc/commands.h"
@@ -29,6 +32,9 @@ int RunSurfacer(SurfacerArgs args) {
   }
   bus::ServiceRuntime runtime(options.service, args.bus);
   surfacer::SurfacerNode node(runtime.bus(), runtime.loop(), runtime.heartbeat(), options);
+  // A scan's surface stage (`avc scan` sends the clusters, views, masks and soil as a job).
+  stage::StageServer stages(runtime.bus(), runtime.loop(), options.service, stage::kSurfaceStage,
+                            surfacer::SurfaceStageHandler());
   return runtime.Run();
 }
 

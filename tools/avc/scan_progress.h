@@ -20,7 +20,8 @@ void ShowScanProgress(const orchestrator::ScanProgress& progress);
 
 // Shows each progress event and publishes the scan's state (orchestrator_state_t on ORCH_STATE)
 // on every change and again every second while the loop runs (the scan runs the loop whenever
-// it waits on the cell; not during the reconstruction's computing). The scan is the cell's
+// it waits on the cell or on a stage service, so all through the reconstruction; not while the
+// planner computes a next view). The scan is the cell's
 // orchestrator: it also beats as "avc-orchestrator" ten times a second from a thread of its
 // own (so planning and reconstruction are not silence), which arms the robot driver's
 // watchdog: when the scan dies or loses the network while the arm moves, the arm is stopped

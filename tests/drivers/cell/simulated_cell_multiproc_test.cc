@@ -47,6 +47,7 @@ TEST(SimulatedCellMultiproc, PlannedViewIsCapturedFromTheTruePoseThroughEveryRea
   options.width = 320;
   options.height = 240;
   options.png = true;  // lossless, so the delivered frame can be compared bit for bit
+  options.stages = false;
   CellProcesses cell(options);
 
   bus::Bus bus(bus_options);

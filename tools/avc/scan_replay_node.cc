@@ -1,4 +1,4 @@
-#include "orchestrator/scan_replay_node.h"
+#include "tools/avc/scan_replay_node.h"
 
 #include <fmt/format.h>
 
@@ -18,9 +18,11 @@
 #include "core/products/product_receiver.h"
 #include "core/util/file_io.h"
 #include "core/util/log.h"
-#include "orchestrator/scan_processing.h"
+#include "services/builder/build_step.h"
+#include "services/clusterer/cluster_step.h"
+#include "services/surfacer/surface_step.h"
 
-namespace avc::orchestrator {
+namespace avc::cli {
 namespace {
 
 namespace fs = std::filesystem;
@@ -81,14 +83,12 @@ class ScanReplayNode final : public record::ReplayNode {
       cameras.push_back({message.image_id, messages::CameraFromMessage(message)});
     }
     camera::WriteCamerasJson(dir_ / "cameras.json", cameras);
-    BuildModel(dir_, dir_ / "model", builder::ReconstructOptions{});
-    const messages::ClustersContent clusters =
-        ClusterModel(dir_ / "model", clusterer::ClustererOptions{});
-    const surfacer::SurfacerResult surface = SurfaceModel(clusters, dir_ / "model");
-    outcome_ = fmt::format(
-        "scan {}: {} kept views of {} images rebuilt; model/mesh.ply has {} "
-        "triangles",
-        cameras_->scan_id, cameras.size(), images_by_name_.size(), surface.mesh.faces.size());
+    const fs::path model = dir_ / "model";
+    builder::BuildModel(dir_, model, builder::ReconstructOptions{});
+    clusterer::ClusterModel(model, model, clusterer::ClustererOptions{});
+    surfacer::SurfaceModel(model, model);
+    outcome_ = fmt::format("scan {}: {} kept views of {} images rebuilt into {}", cameras_->scan_id,
+                           cameras.size(), images_by_name_.size(), (model / "mesh.ply").string());
   }
 
   bus::Bus& bus_;
@@ -111,4 +111,4 @@ void RegisterScanReplayNode(record::NodeRegistry& registry) {
                     });
 }
 
-}  // namespace avc::orchestrator
+}  // namespace avc::cli

@@ -1,0 +1,76 @@
+#include "services/surfacer/surface_step.h"
+
+#include <fmt/format.h>
+
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+#include "core/geometry/mesh_io.h"
+#include "core/ppr/octree_voxels.h"
+#include "core/stage/stage_names.h"
+#include "core/surface/surface_images_io.h"
+#include "core/traits/traits_writer.h"
+#include "core/util/file_io.h"
+#include "services/builder/soil_level.h"
+#include "services/clusterer/cluster_step.h"
+#include "services/surfacer/plant_base.h"
+#include "services/surfacer/surface_clusters.h"
+
+namespace avc::surfacer {
+namespace {
+
+namespace fs = std::filesystem;
+
+// What the surfacer made of the clusters (the scan report's "surface"), and what it warned of.
+nlohmann::ordered_json SurfaceSummary(const surface::SurfaceReport& made) {
+  return {{"clusters", made.clusters},
+          {"points_used", made.used_points},
+          {"points_left_out", made.points_left_out},
+          {"cells", made.cells},
+          {"cells_split_by_phase3", made.cell_islands},
+          {"image_views", made.image_views},
+          {"grown_vertices", made.grown_vertices},
+          {"stitch_faces", made.stitching.faces},
+          {"area_m2_after_phase",
+           {{"1", made.area_triangulated},
+            {"2", made.area_grown},
+            {"3", made.area_modified},
+            {"4", made.area}}},
+          {"faces", made.faces},
+          {"components", made.components},
+          {"warnings", made.warnings}};
+}
+
+}  // namespace
+
+void SurfaceModel(const fs::path& model_dir, const fs::path& output_dir) {
+  const messages::ClustersContent clusters =
+      clusterer::ReadClustersMessage(model_dir / stage::kClustersMessageFile);
+  // The masks the build wrote drive Phase 2's growth (a model without them: the band growth).
+  const surface::SurfaceImages images = surface::ReadSurfaceImages(model_dir);
+  // Plant height from the soil surface the builder found, else from the proxy's base.
+  SurfacerOptions options;
+  const fs::path proxy_file = model_dir / "ppr.bt";
+  options.traits.ground_z =
+      PlantGroundZ(builder::SoilZ(builder::ReadSoilLevel(model_dir / "soil.json")),
+                   ppr::OccupiedVoxelsFromBinary(ReadFile(proxy_file), 0.0, proxy_file.string()));
+  const SurfacerResult surface = SurfaceClusters(clusters, options, &images);
+  if (!surface.problem.empty()) {
+    throw std::runtime_error("no surface could be made: " + surface.problem);
+  }
+  geometry::WriteMeshPly(output_dir / "mesh.ply", surface.mesh);
+  traits::WriteTraitFiles(surface.traits, output_dir.string());
+  WriteFileAtomically(output_dir / "surface.json", SurfaceSummary(surface.report).dump(2) + "\n");
+}
+
+stage::StageHandler SurfaceStageHandler() {
+  return [](const stage::StageWork& work) {
+    if (!work.settings.empty()) {
+      throw std::invalid_argument(
+          fmt::format("the surface stage takes no settings; got '{}'", work.settings.front()));
+    }
+    SurfaceModel(work.input_dir, work.output_dir);
+  };
+}
+
+}  // namespace avc::surfacer
