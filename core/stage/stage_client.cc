@@ -1,7 +1,6 @@
 #include "core/stage/stage_client.h"
 
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <avc/stage_job_t.hpp>
@@ -10,8 +9,8 @@
 #include "core/bus/channels.h"
 #include "core/bus/decode.h"
 #include "core/stage/stage_files.h"
-#include "core/util/clock.h"
 #include "core/util/log.h"
+#include "core/util/session_tag.h"
 
 namespace avc::stage {
 namespace {
@@ -21,14 +20,6 @@ using Clock = std::chrono::steady_clock;
 int64_t SteadyMicros() {
   return std::chrono::duration_cast<std::chrono::microseconds>(Clock::now().time_since_epoch())
       .count();
-}
-
-// Distinct for every client a process or its restarts make, so a restarted requester never
-// reuses the request ids a service still remembers from its previous life.
-std::string SessionTag() {
-  static int clients = 0;
-  return fmt::format("{:x}{:x}{}", static_cast<uint32_t>(getpid()),
-                     static_cast<uint64_t>(SystemClock().NowMicros()) & 0xffffff, clients++);
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "core/bus/heartbeat.h"
 #include "core/kinematics/row_major_pose.h"
 #include "core/util/clock.h"
+#include "core/util/session_tag.h"
 
 namespace avc::client {
 namespace {
@@ -22,13 +23,6 @@ namespace {
 int64_t WallMicros() { return SystemClock().NowMicros(); }
 
 constexpr std::chrono::milliseconds kImageAfterDoneGrace{10000};
-
-// Distinct for every client a process or its restarts make: the process id and the start time.
-std::string SessionTag() {
-  static std::atomic<int> clients{0};
-  return fmt::format("{:x}{:x}{}", static_cast<uint32_t>(getpid()),
-                     static_cast<uint64_t>(WallMicros()) & 0xffffff, clients++);
-}
 
 }  // namespace
 
