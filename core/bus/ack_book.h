@@ -22,6 +22,10 @@ class AckBook {
   // Publishes the ack without remembering it: the answer to a message that is not a genuine
   // request (e.g. one failing authentication), which must not become the request id's answer.
   void SendUnremembered(const std::string& request_id, int8_t status, const std::string& reason);
+  // NOT_READY, not remembered: the same request id sent again once we are READY is taken as new.
+  void SendNotReady(const std::string& request_id, const std::string& reason) {
+    SendUnremembered(request_id, avc::ack_t::STATUS_NOT_READY, reason);
+  }
   // A request seen before gets its latest answer again: returns true after re-sending it.
   bool Repeat(const std::string& request_id);
   bool Knows(const std::string& request_id) const { return last_.count(request_id) != 0; }

@@ -205,6 +205,10 @@ std::string CameraNode::Validate(const avc::capture_request_t& request) const {
       request.encoding != avc::image_t::ENCODING_JPEG) {
     return fmt::format("unknown encoding {}", request.encoding);
   }
+  return "";
+}
+
+std::string CameraNode::NotReady() const {
   if (shutting_down_) return options_.service + " is stopping";
   if (!connected_) return "camera not ready: " + error_;
   if (unanswered_.size() >= options_.max_queued_captures) {
@@ -219,6 +223,11 @@ void CameraNode::OnRequest(const avc::capture_request_t& request) {
   if (!refusal.empty()) {
     log::Warn("camera: refused '{}': {}", request.request_id, refusal);
     acks_.Send(request.request_id, avc::ack_t::STATUS_REFUSED, refusal);
+    return;
+  }
+  if (const std::string not_ready = NotReady(); !not_ready.empty()) {
+    log::Warn("camera: not ready for '{}': {}", request.request_id, not_ready);
+    acks_.SendNotReady(request.request_id, not_ready);
     return;
   }
   unanswered_.insert(request.request_id);

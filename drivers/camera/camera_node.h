@@ -62,7 +62,10 @@ class CameraNode {
   struct Outcome;
 
   void OnRequest(const avc::capture_request_t& request);
+  // Why the request is refused for good (malformed), or "".
   std::string Validate(const avc::capture_request_t& request) const;
+  // Why no capture can be taken now (stopping, no camera, queue full), or "": NOT_READY.
+  std::string NotReady() const;
   void Tick();
   void TryConnect();
   void OnConnected(const std::string& description);

@@ -114,15 +114,33 @@ double CellClient::SendUntilDone(const std::string& id, const std::function<void
   // restarted while the command ran, which has forgotten it and takes it up (a live driver
   // answers a repeated id from memory and does nothing twice).
   const int64_t deadline_us = sent_us + static_cast<int64_t>(timeout.count()) * 1000;
+  const auto remaining_ms = [&] {
+    return std::chrono::milliseconds(
+        std::max<int64_t>((deadline_us - MonotonicMicros()) / 1000, 0));
+  };
   send();
-  while (!loop_.RunUntil([&] { return final_acks_.count(id) != 0; },
-                         std::chrono::milliseconds(std::clamp<int64_t>(
-                             (deadline_us - MonotonicMicros()) / 1000, 0, 1000)))) {
-    if (loop_.quitting()) {  // SIGTERM: the caller pauses; a resume sends the command again
-      throw std::runtime_error(fmt::format("stopped before '{}' was answered", id));
+  for (;;) {
+    while (!loop_.RunUntil([&] { return final_acks_.count(id) != 0; },
+                           std::min(remaining_ms(), std::chrono::milliseconds(1000)))) {
+      if (loop_.quitting()) {  // SIGTERM: the caller pauses; a resume sends the command again
+        throw std::runtime_error(fmt::format("stopped before '{}' was answered", id));
+      }
+      if (MonotonicMicros() >= deadline_us) {
+        throw std::runtime_error(
+            fmt::format("no answer to '{}' within {} ms", id, timeout.count()));
+      }
+      send();
     }
-    if (MonotonicMicros() >= deadline_us) {
-      throw std::runtime_error(fmt::format("no answer to '{}' within {} ms", id, timeout.count()));
+    const avc::ack_t& ack = final_acks_.at(id);
+    if (ack.status != avc::ack_t::STATUS_NOT_READY) break;
+    // A driver starting, reconnecting or busy (e.g. restarted mid-scan) takes the same request
+    // once its heartbeat says READY.
+    const avc::ack_t not_ready = ack;
+    final_acks_.erase(id);
+    if (!WaitReadyAgain(not_ready.service, remaining_ms())) {
+      throw std::runtime_error(fmt::format("{} was not ready for '{}' within {} ms: {}",
+                                           not_ready.service, id, timeout.count(),
+                                           not_ready.reason));
     }
     send();
   }
@@ -178,33 +196,14 @@ double CellClient::TurntableGoto(double angle_rad, std::chrono::milliseconds tim
 
 CapturedView CellClient::Capture(const std::string& image_id, int8_t encoding,
                                  std::chrono::milliseconds timeout) {
-  const int64_t deadline_us = MonotonicMicros() + static_cast<int64_t>(timeout.count()) * 1000;
-  const auto remaining = [&] {
-    return std::chrono::milliseconds(
-        std::max<int64_t>((deadline_us - MonotonicMicros()) / 1000, 0));
-  };
   avc::capture_request_t request{};
   request.image_id = image_id;
   request.encoding = encoding;
-  int64_t sent_wall = 0;
   CapturedView view;
-  for (;;) {
-    request.request_id = NextId("capture");
-    sent_wall = WallMicros();
-    try {
-      view.request_to_done_s = SendUntilDone(
-          request.request_id, [&] { bus_.Publish(channels::kCaptureRequest, request); },
-          remaining());
-      break;
-    } catch (const CommandRefused& refusal) {
-      const std::string camera = final_acks_.at(request.request_id).service;
-      if (!WaitReadyAgain(camera, remaining())) {
-        throw std::runtime_error(fmt::format(
-            "{} refused image {} and was not READY again within {} ms of the first request: {}",
-            camera, image_id, timeout.count(), refusal.what()));
-      }
-    }
-  }
+  request.request_id = NextId("capture");
+  const int64_t sent_wall = WallMicros();
+  view.request_to_done_s = SendUntilDone(
+      request.request_id, [&] { bus_.Publish(channels::kCaptureRequest, request); }, timeout);
   const auto arrived = [&] {
     return std::find_if(products_.begin(), products_.end(), [&](const auto& entry) {
       return entry.first.rfind("images/" + image_id + ".", 0) == 0;

@@ -35,9 +35,10 @@
 
 namespace avc::client {
 
-// A command the service refused (unreachable target, outside the safety envelope, bad value):
-// the cell is fine, the request was not. Other failures (timeouts, FAILED) are plain
-// std::runtime_error. A camera's refusal is never one: see Capture.
+// A command the service refused for good (unreachable target, outside the safety envelope, bad
+// value): the cell is fine, the request was not. Other failures (timeouts, FAILED) are plain
+// std::runtime_error. A driver that is not ready (starting, reconnecting, busy: NOT_READY) never
+// causes one: the command waits for it (SendUntilDone).
 class CommandRefused : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
@@ -73,10 +74,6 @@ class CellClient {
   double SetPlantKeepOut(const kinematics::PlantKeepOut& keep_out,
                          std::chrono::milliseconds timeout);
   double TurntableGoto(double angle_rad, std::chrono::milliseconds timeout);
-  // A camera refuses while it connects (a restarted driver), reconnects or stops: that is the
-  // cell's fault, not the view's, so the capture is asked again under a new request id once
-  // the camera heartbeats READY anew, until `timeout`; then it throws std::runtime_error (never
-  // CommandRefused, which a planner takes as "skip this view").
   CapturedView Capture(const std::string& image_id, int8_t encoding,
                        std::chrono::milliseconds timeout);
 
@@ -98,8 +95,9 @@ class CellClient {
     bus_.Publish(channel, command);
   }
   // Publishes with `send` until the service acknowledges `id` at all (a datagram can be lost;
-  // re-sending an id is harmless), then runs the loop until it is DONE. Returns the seconds
-  // from the first send.
+  // re-sending an id is harmless), then runs the loop until it is DONE. A NOT_READY answer
+  // (a driver restarted mid-scan, say) sends the same id again once the service heartbeats
+  // READY anew. Returns the seconds from the first send.
   double SendUntilDone(const std::string& id, const std::function<void()>& send,
                        std::chrono::milliseconds timeout);
   // Runs the loop until `service` heartbeats READY after now; false when `timeout` passed.

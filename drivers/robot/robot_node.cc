@@ -126,6 +126,10 @@ void RobotNode::UpdateHeartbeat() {
     heartbeat_.Set(bus::ServiceState::kError, error_);
   } else if (active_) {
     heartbeat_.Set(bus::ServiceState::kBusy, "moving: " + active_->request_id);
+  } else if (!last_state_) {
+    // READY promises a motion can start: not before the controller's first state.
+    heartbeat_.Set(bus::ServiceState::kStarting,
+                   "connected to " + config_.host + "; waiting for its first state");
   } else {
     heartbeat_.Set(bus::ServiceState::kReady, "connected to " + config_.host);
   }

@@ -114,7 +114,9 @@ class RobotNode {
   void Ack(const std::string& request_id, int8_t status, const std::string& reason);
   // True when the command is authentic and for this cell; else the refusal is sent and logged.
   bool Authentic(const avc::robot_command_t& command);
-  // Returns a refusal reason, or empty after the motion was sent.
+  // Why no motion can start yet (busy, no state from the controller yet), or empty.
+  std::string MotionNotReady() const;
+  // Returns a refusal reason, or empty after the motion was sent (MotionNotReady() was empty).
   std::string StartMotion(const avc::robot_command_t& command);
   std::string RunDashboard(const avc::robot_command_t& command);
   void Stop(const avc::robot_command_t& command);

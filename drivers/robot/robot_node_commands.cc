@@ -52,13 +52,17 @@ void RobotNode::Handle(const Command& command) {
   if (!Authentic(command)) return;
   if (acks_.Repeat(command.request_id)) return;  // idempotent: the last answer, nothing else
   if (!link_.connected()) {
-    Ack(command.request_id, avc::ack_t::STATUS_REFUSED, error_);
+    acks_.SendNotReady(command.request_id, error_);
     return;
   }
   std::string refusal;
   switch (command.kind) {
     case Command::KIND_MOVE_JOINTS:
     case Command::KIND_MOVE_LINEAR:
+      if (const std::string not_ready = MotionNotReady(); !not_ready.empty()) {
+        acks_.SendNotReady(command.request_id, not_ready);
+        return;
+      }
       refusal = StartMotion(command);
       if (refusal.empty()) {
         Ack(command.request_id, avc::ack_t::STATUS_ACCEPTED, "motion sent");
@@ -125,9 +129,13 @@ std::string RobotNode::SetPlantKeepOut(const Command& command) {
   return {};
 }
 
-std::string RobotNode::StartMotion(const Command& command) {
+std::string RobotNode::MotionNotReady() const {
   if (active_) return "busy with request " + active_->request_id;
   if (!last_state_) return "no robot state received yet";
+  return {};
+}
+
+std::string RobotNode::StartMotion(const Command& command) {
   const RobotState& state = *last_state_;
   if (state.robot_mode != RobotMode::kRunning) {
     return fmt::format("robot mode is {}, not RUNNING", RobotModeName(state.robot_mode));

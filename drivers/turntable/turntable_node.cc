@@ -174,6 +174,10 @@ std::string TurntableNode::Validate(const avc::turntable_command_t& command) con
   if (!std::isfinite(command.speed) || command.speed < 0) {
     return fmt::format("speed must be >= 0 rad/s (0 = default), got {}", command.speed);
   }
+  return "";
+}
+
+std::string TurntableNode::NotReady(const avc::turntable_command_t& command) const {
   if (!device_) return "turntable not connected: " + error_;
   if (!active_request_.empty() && command.kind != avc::turntable_command_t::KIND_STOP) {
     return fmt::format("busy with request '{}' ({})", active_request_, active_description_);
@@ -199,6 +203,10 @@ void TurntableNode::OnCommand(const avc::turntable_command_t& command) {
     log::Warn("turntable: refused {} '{}': {}", KindName(command.kind), command.request_id,
               refusal);
     SendAck(command.request_id, avc::ack_t::STATUS_REFUSED, refusal);
+    return;
+  }
+  if (const std::string not_ready = NotReady(command); !not_ready.empty()) {
+    acks_.SendNotReady(command.request_id, not_ready);
     return;
   }
   if (command.kind == avc::turntable_command_t::KIND_STOP) {

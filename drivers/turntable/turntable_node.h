@@ -66,8 +66,10 @@ class TurntableNode {
   void OnCommand(const avc::turntable_command_t& command);
   // True when the command is authentic and for this cell; else the refusal is sent and logged.
   bool Authentic(const avc::turntable_command_t& command);
-  // Starts the command's move; returns a refusal reason, or "" when accepted.
+  // Why the command is refused for good (malformed), or "".
   std::string Validate(const avc::turntable_command_t& command) const;
+  // Why it cannot start now (no device, busy), or "": a NOT_READY answer.
+  std::string NotReady(const avc::turntable_command_t& command) const;
   void Start(const avc::turntable_command_t& command);
   void Stop(const avc::turntable_command_t& command);
   void Tick();

@@ -260,7 +260,7 @@ TEST(CameraNode, ALostCameraFailsTheRequestGoesToErrorAndIsReopened) {
   ASSERT_TRUE(h.WaitHealth(avc::heartbeat_t::STATE_ERROR));
   h.Request("meanwhile", "view_meanwhile");
   const avc::ack_t refused = h.WaitFinal("meanwhile");
-  EXPECT_EQ(refused.status, avc::ack_t::STATUS_REFUSED);
+  EXPECT_EQ(refused.status, avc::ack_t::STATUS_NOT_READY);
   EXPECT_EQ(refused.reason.rfind("camera not ready: camera lost: camera went away", 0), 0u)
       << refused.reason;
   ASSERT_TRUE(h.WaitHealth(avc::heartbeat_t::STATE_READY));
@@ -278,7 +278,7 @@ TEST(CameraNode, OpeningFailuresKeepRetryingWithBackoffUntilTheCameraAnswers) {
       },
       milliseconds(3000)));
   h.Request("early", "view_early");
-  EXPECT_EQ(h.WaitFinal("early").status, avc::ack_t::STATUS_REFUSED);
+  EXPECT_EQ(h.WaitFinal("early").status, avc::ack_t::STATUS_NOT_READY);
   ASSERT_TRUE(h.WaitHealth(avc::heartbeat_t::STATE_READY));
   EXPECT_EQ(h.faults.opens, 4);
 }
@@ -294,7 +294,9 @@ TEST(CameraNode, ShutdownFailsWhatIsStillQueued) {
   EXPECT_EQ(h.WaitFinal("q1").reason, "avc-camera stopping");
   EXPECT_EQ(h.WaitFinal("q2").reason, "avc-camera stopping");
   h.Request("late", "view_late");
-  EXPECT_EQ(h.WaitFinal("late").reason, "avc-camera is stopping");
+  const avc::ack_t late = h.WaitFinal("late");
+  EXPECT_EQ(late.status, avc::ack_t::STATUS_NOT_READY);
+  EXPECT_EQ(late.reason, "avc-camera is stopping");
   h.loop.RunUntil([] { return false; }, milliseconds(500));  // late outcomes are dropped
   size_t finals_for_q1 = 0;
   for (const auto& ack : h.acks) {
@@ -303,8 +305,8 @@ TEST(CameraNode, ShutdownFailsWhatIsStillQueued) {
   EXPECT_EQ(finals_for_q1, 1u);
 }
 
-// A restarted camera driver refuses captures until it has its camera ("camera not ready"). The
-// scan once took that refusal as "this view is unreachable" and skipped the view (a chaos trial
+// A restarted camera driver answers NOT_READY until it has its camera ("camera not ready"). The
+// scan once took that answer as "this view is unreachable" and skipped the view (a chaos trial
 // that killed avc-camera lost view_0010): the client must ask again once the camera is READY.
 TEST(CameraNode, TheClientsCaptureWaitsForACameraThatIsStillConnecting) {
   Harness h(/*open_failures=*/4);
@@ -315,7 +317,7 @@ TEST(CameraNode, TheClientsCaptureWaitsForACameraThatIsStillConnecting) {
   EXPECT_EQ(view.image.data, h.jpeg);
   int refused = 0, done = 0;
   for (const avc::ack_t& ack : h.acks) {
-    refused += ack.status == avc::ack_t::STATUS_REFUSED;
+    refused += ack.status == avc::ack_t::STATUS_NOT_READY;
     done += ack.status == avc::ack_t::STATUS_DONE;
   }
   EXPECT_GE(refused, 1) << "the camera was not refusing: the test did not test the wait";
@@ -333,9 +335,9 @@ TEST(CameraNode, ACameraThatNeverComesBackIsACellFailureNotARefusedView) {
     ADD_FAILURE() << "taken as a refused view: " << refusal.what();
   } catch (const std::runtime_error& error) {
     const std::string what = error.what();
-    EXPECT_NE(what.find("avc-camera refused image view_0003 and was not READY again within 600 ms"),
-              std::string::npos)
+    EXPECT_NE(what.find("avc-camera was not ready for 'test-orchestrator-"), std::string::npos)
         << what;
+    EXPECT_NE(what.find("' within 600 ms: "), std::string::npos) << what;
     EXPECT_NE(what.find("camera not ready"), std::string::npos) << what;
   }
   EXPECT_EQ(h.faults.captures, 0);
