@@ -26,6 +26,7 @@
 #include "core/messages/clusters_message.h"
 #include "core/messages/mvs_points_message.h"
 #include "core/messages/point_records.h"
+#include "core/plan/plan_exchange.h"
 #include "core/products/chunking.h"
 #include "core/util/clock.h"
 #include "core/util/file_io.h"
@@ -265,6 +266,27 @@ void FileSeeds(const fs::path& source) {
   record.options = {{"initial_views", 30}};
   orchestrator::SaveScanRecord(record, dir);
   Seed("scan_record", "scan.json", ReadFile(dir / "scan.json"));
+
+  // A plan job with one answered view and one refused, and an answer asking for a third.
+  plan::PlanRequest request;
+  const cv::Mat mask = cv::Mat::zeros(6, 8, CV_8UC1);
+  mask(cv::Rect(2, 2, 3, 2)).setTo(255);
+  request.answered.push_back(
+      {{kinematics::JointVector::Constant(0.25), 0.5}, plan::EncodeMask(mask)});
+  request.answered.push_back({{kinematics::JointVector::Constant(-0.5), 1.0}, std::nullopt});
+  plan::PlanAnswer answer;
+  answer.phase = plan::PlanPhase::kInitialCapture;
+  answer.next = plan::ViewRequest{kinematics::JointVector::Constant(0.1), -0.2};
+  answer.keep_out.z0_m = -0.01;
+  answer.keep_out.radius_m = {0.1, 0.12};
+  answer.settings = {{"max_views", "14"}};
+  const fs::path plan_dir = dir / "plan";
+  plan::WritePlanRequest(request, plan_dir);
+  plan::WritePlanAnswer(answer, plan_dir);
+  Seed("plan_exchange", "two_views",
+       ReadFile(plan_dir / plan::kRequestFile) + std::string(kPartSeparator) +
+           ReadFile(plan_dir / plan::kAnswerFile) + std::string(kPartSeparator) +
+           ReadFile(plan_dir / "masks/view_0000.png"));
 
   for (const auto& entry : fs::directory_iterator(source / "launch")) {
     const std::string ext = entry.path().extension().string();

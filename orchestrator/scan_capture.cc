@@ -19,11 +19,11 @@ namespace {
 
 constexpr double kDegree = M_PI / 180;
 
-bool SamePose(const CaptureRecord& capture, const planner::CellView& view, double tolerance) {
+bool SamePose(const CaptureRecord& capture, const plan::ViewRequest& view, double tolerance) {
   for (int i = 0; i < 6; ++i) {
     if (std::abs(capture.joints[i] - view.joints[i]) > tolerance) return false;
   }
-  return std::abs(capture.table_angle - view.turntable_angle) <= tolerance;
+  return std::abs(capture.table_angle - view.table_angle) <= tolerance;
 }
 
 // The file's bytes, or nothing when it is missing or unreadable (it is then captured again).
@@ -65,7 +65,7 @@ ScanCapture::ScanCapture(client::CellClient& cell, std::filesystem::path scan_di
   Extension(options_.encoding);  // refuse an unstorable encoding before any motion
 }
 
-std::optional<cv::Mat> ScanCapture::operator()(const planner::CellView& view) {
+std::optional<cv::Mat> ScanCapture::operator()(const plan::ViewRequest& view) {
   const int index = next_index_++;
   const auto recorded = std::find_if(record_.captures.begin(), record_.captures.end(),
                                      [&](const CaptureRecord& c) { return c.index == index; });
@@ -75,7 +75,7 @@ std::optional<cv::Mat> ScanCapture::operator()(const planner::CellView& view) {
           "{}: the planner now asks for turntable {:.2f} deg at other joints than the recorded "
           "capture (turntable {:.2f} deg); the scan's options or calibration changed since it "
           "started, so it cannot be resumed as it is",
-          recorded->image_id, view.turntable_angle / kDegree, recorded->table_angle / kDegree));
+          recorded->image_id, view.table_angle / kDegree, recorded->table_angle / kDegree));
     }
     const std::string bytes = BytesIfReadable(scan_dir_ / recorded->file);
     if (!bytes.empty() && Sha256Hex(bytes) == recorded->sha256) {
@@ -101,11 +101,11 @@ std::optional<cv::Mat> ScanCapture::operator()(const planner::CellView& view) {
   }
 }
 
-cv::Mat ScanCapture::TakeLive(const planner::CellView& view, int index) {
+cv::Mat ScanCapture::TakeLive(const plan::ViewRequest& view, int index) {
   const std::string image_id = CaptureImageId(index);
   cell_.SetPlantKeepOut(plant_keep_out_, options_.motion_timeout);
   cell_.MoveJoints(view.joints, options_.motion_timeout);
-  cell_.TurntableGoto(view.turntable_angle, options_.motion_timeout);
+  cell_.TurntableGoto(view.table_angle, options_.motion_timeout);
   cell_.WaitFreshState(options_.motion_timeout);  // the state read after both motions ended
   const Eigen::Isometry3d reported_flange = cell_.last_flange_pose();
   const double reported_angle = cell_.last_table_angle();
@@ -121,12 +121,12 @@ cv::Mat ScanCapture::TakeLive(const planner::CellView& view, int index) {
     throw std::runtime_error(
         fmt::format("{}: the camera's {} bytes do not decode as an image", image_id, bytes.size()));
   }
-  const camera::Intrinsics& k = view.camera.intrinsics;
-  if (image.cols != k.width || image.rows != k.height) {
+  if (options_.image_width > 0 &&
+      (image.cols != options_.image_width || image.rows != options_.image_height)) {
     throw std::runtime_error(fmt::format(
         "{}: the camera delivered {}x{} but the calibration's camera is {}x{}; load the "
         "calibration of this camera at this resolution",
-        image_id, image.cols, image.rows, k.width, k.height));
+        image_id, image.cols, image.rows, options_.image_width, options_.image_height));
   }
 
   CaptureRecord capture;
@@ -138,7 +138,7 @@ cv::Mat ScanCapture::TakeLive(const planner::CellView& view, int index) {
                       {reinterpret_cast<const char*>(bytes.data()), bytes.size()});
   capture.sha256 = Sha256Hex(bytes);
   for (int i = 0; i < 6; ++i) capture.joints[i] = view.joints[i];
-  capture.table_angle = view.turntable_angle;
+  capture.table_angle = view.table_angle;
   kinematics::RowMajorFromIsometry(reported_flange, capture.reported_T_base_flange.data());
   capture.reported_table_angle = reported_angle;
   std::erase_if(record_.captures, [&](const CaptureRecord& c) { return c.index == index; });
@@ -151,8 +151,7 @@ cv::Mat ScanCapture::TakeLive(const planner::CellView& view, int index) {
   return segmentation::SegmentPlant(image, options_.mask).mask;
 }
 
-void MarkPlannedViews(ScanRecord& record, const planner::ActiveVisionResult& result,
-                      double pose_tolerance) {
+void MarkPlannedViews(ScanRecord& record, const plan::FinalPlan& plan, double pose_tolerance) {
   // Captures and planned views are both in capture order; framing frames sit between them. A
   // frame at exactly a planned view's pose may take that view's marks: same pose, same picture.
   size_t next_view = 0;
@@ -160,9 +159,9 @@ void MarkPlannedViews(ScanRecord& record, const planner::ActiveVisionResult& res
     capture.phase = "frame";
     capture.reason = "framing";
     capture.kept = false;
-    if (next_view < result.views.size() &&
-        SamePose(capture, result.views[next_view].view, pose_tolerance)) {
-      const planner::PlannedView& planned = result.views[next_view++];
+    if (next_view < plan.views.size() &&
+        SamePose(capture, plan.views[next_view].view, pose_tolerance)) {
+      const plan::PlannedView& planned = plan.views[next_view++];
       capture.phase = planned.phase;
       capture.reason = planned.reason;
       capture.kept = planned.kept;

@@ -1,11 +1,11 @@
 #pragma once
 
-// The planner's capture step in the live cell, with the scan's memory. Each view the planner asks
-// for is taken through the drivers (arm, turntable and camera over the bus); its image is written
-// into the scan directory and recorded in scan.json before the planner sees its mask. A resumed
-// scan runs the planner again over the same record: the planner is deterministic, so it asks for
-// the same views in the same order, and each view already on disk is answered from its file with
-// no motion. Only views whose file is missing or damaged are captured again.
+// The scan's capture step in the live cell, with the scan's memory. Each view the planner
+// (avc-planner) asks for is taken through the drivers (arm, turntable and camera over the bus);
+// its image is written into the scan directory and recorded in scan.json before the planner gets
+// its mask. A resumed scan plans again over the same record: the planner is deterministic, so it
+// asks for the same views in the same order, and each view already on disk is answered from its
+// file with no motion. Only views whose file is missing or damaged are captured again.
 
 #include <avc/image_t.hpp>
 #include <chrono>
@@ -15,10 +15,10 @@
 #include <optional>
 #include <string>
 
+#include "core/plan/plan_exchange.h"
 #include "core/segmentation/plant_mask.h"
 #include "drivers/client/cell_client.h"
 #include "orchestrator/scan_record.h"
-#include "services/planner/active_vision.h"
 
 namespace avc::orchestrator {
 
@@ -30,9 +30,9 @@ struct ScanCaptureOptions {
   // A recorded capture answers a request only at the same joints and table angle (radians).
   double pose_tolerance = 1e-6;
   segmentation::MaskOptions mask;
-  // The arm's driver keeps the arm this far (metres) from the plant proxy swept about the table
-  // axis (kinematics::PlantKeepOut).
-  double plant_keep_out_margin = 0.02;
+  // The calibration's image size: a camera delivering another is a fault (0: not checked).
+  int image_width = 0;
+  int image_height = 0;
 };
 
 class ScanCapture {
@@ -43,12 +43,12 @@ class ScanCapture {
               std::function<void()> persist, ScanCaptureOptions options = {},
               std::function<void(const std::string&)> progress = {});
 
-  // A planner::CaptureFunction: the plant mask of the view, or nullopt when the arm or the
-  // turntable refused it (unreachable, outside the safety envelope: the planner skips it).
+  // The plant mask of the view, or nullopt when the arm or the turntable refused it
+  // (unreachable, outside the safety envelope: the planner skips it).
   // Throws std::runtime_error when the cell failed (a timeout, a device fault, an image that
   // does not decode) or the request contradicts the record (the plan changed): the scan then
   // stops with nothing lost and can be resumed.
-  std::optional<cv::Mat> operator()(const planner::CellView& view);
+  std::optional<cv::Mat> operator()(const plan::ViewRequest& view);
 
   // The plant's space the arm must stay out of from now on (empty: no plant known yet). It
   // goes to the arm's driver before every live move, so a restarted driver gets it back and a
@@ -59,7 +59,7 @@ class ScanCapture {
   int reused() const { return reused_; }  // answered from the scan directory
 
  private:
-  cv::Mat TakeLive(const planner::CellView& view, int index);
+  cv::Mat TakeLive(const plan::ViewRequest& view, int index);
 
   client::CellClient& cell_;
   std::filesystem::path scan_dir_;
@@ -76,10 +76,10 @@ class ScanCapture {
 // The image id of the index-th capture of a scan: view_0000, view_0001, ...
 std::string CaptureImageId(int index);
 
-// After the planner returned: each capture gets its phase ("initial" or "active"), the reason
-// it was chosen and whether Phase 3 kept it, matched by pose; captures the planner did not keep
-// as views (framing frames, skipped requests) become phase "frame", not kept.
-void MarkPlannedViews(ScanRecord& record, const planner::ActiveVisionResult& result,
+// After the final plan: each capture gets its phase ("initial" or "active"), the reason it was
+// chosen and whether Phase 3 kept it, matched by pose; captures the planner did not keep as
+// views (framing frames, skipped requests) become phase "frame", not kept.
+void MarkPlannedViews(ScanRecord& record, const plan::FinalPlan& plan,
                       double pose_tolerance = 1e-6);
 
 }  // namespace avc::orchestrator

@@ -7,64 +7,62 @@
 namespace avc::orchestrator {
 namespace {
 
-[[noreturn]] void Fail(const char* key, const std::string& what) {
+constexpr char kSettingsKey[] = "planner_settings";
+
+[[noreturn]] void Fail(const std::string& key, const std::string& what) {
   throw std::runtime_error(fmt::format(
       "scan.json options.{} {}: the scan cannot be resumed with the planner it started with", key,
       what));
 }
 
-// Far above any planner count the command line allows (200 views), far below int's range.
-constexpr int64_t kLargestRecordedCount = 10000;
-
-void RestoreInteger(const nlohmann::json& options, const char* key, int min, int* value) {
-  const auto it = options.find(key);
-  if (it == options.end()) return;
-  if (!it->is_number_integer()) Fail(key, "must be an integer, got " + it->dump());
-  const int64_t recorded = it->get<int64_t>();
-  if (recorded < min || recorded > kLargestRecordedCount) {
-    Fail(key, fmt::format("must be in [{}, {}], got {}", min, kLargestRecordedCount, recorded));
-  }
-  *value = static_cast<int>(recorded);
-}
-
 }  // namespace
 
-void RecordPlannerSettings(const planner::ActiveVisionOptions& planner, nlohmann::json* options) {
-  (*options)[kMaxViewsSetting] = planner.max_views;
-  (*options)[kLevelsSetting] = planner.levels;
-  (*options)[kViewsPerLevelSetting] = planner.views_per_level;
-  (*options)[kPruneFaceLossSetting] = planner.prune_max_covered_faces_lost;
+void RecordPlannerSettings(const PlannerSettings& settings, nlohmann::json* options) {
+  (*options)[kSettingsKey] = settings;
 }
 
-void RestorePlannerSettings(const nlohmann::json& options, planner::ActiveVisionOptions* planner) {
+PlannerSettings RecordedPlannerSettings(const nlohmann::json& options) {
   if (!options.is_object()) throw std::runtime_error("scan.json options must be an object");
-  RestoreInteger(options, kMaxViewsSetting, 1, &planner->max_views);
-  RestoreInteger(options, kLevelsSetting, 1, &planner->levels);
-  RestoreInteger(options, kViewsPerLevelSetting, 1, &planner->views_per_level);
-  if (const auto it = options.find(kPruneFaceLossSetting); it != options.end()) {
-    if (!it->is_number()) Fail(kPruneFaceLossSetting, "must be a number, got " + it->dump());
-    const double recorded = it->get<double>();
-    if (!(recorded >= 0.0 && recorded <= 1.0)) {
-      Fail(kPruneFaceLossSetting, fmt::format("must be in [0, 1], got {}", recorded));
+  PlannerSettings recorded;
+  if (const auto it = options.find(kSettingsKey); it != options.end()) {
+    if (!it->is_object()) Fail(kSettingsKey, "must be an object of strings");
+    for (const auto& [key, value] : it->items()) {
+      if (!value.is_string()) {
+        Fail(std::string(kSettingsKey) + "." + key, "must be a string, got " + value.dump());
+      }
+      recorded[key] = value.get<std::string>();
     }
-    planner->prune_max_covered_faces_lost = recorded;
+    return recorded;
   }
+  // Older scans kept Algorithm 1's counts as numbers beside the other options.
+  for (const char* key :
+       {kMaxViewsSetting, kLevelsSetting, kViewsPerLevelSetting, kPruneFaceLossSetting}) {
+    const auto it = options.find(key);
+    if (it == options.end()) continue;
+    if (!it->is_number()) Fail(key, "must be a number, got " + it->dump());
+    recorded[key] = it->is_number_integer() ? std::to_string(it->get<int64_t>())
+                                            : fmt::format("{}", it->get<double>());
+  }
+  return recorded;
 }
 
-std::string DescribePlannerChanges(const planner::ActiveVisionOptions& recorded,
-                                   const planner::ActiveVisionOptions& given,
+std::string DescribePlannerChanges(const PlannerSettings& recorded, const PlannerSettings& given,
                                    const std::set<std::string>& keys) {
   std::string changes;
-  auto compare = [&changes, &keys](const char* key, auto was, auto now) {
-    if (was == now || !keys.contains(key)) return;
-    changes += fmt::format("{}{} {} (given {})", changes.empty() ? "" : ", ", key, was, now);
-  };
-  compare(kMaxViewsSetting, recorded.max_views, given.max_views);
-  compare(kLevelsSetting, recorded.levels, given.levels);
-  compare(kViewsPerLevelSetting, recorded.views_per_level, given.views_per_level);
-  compare(kPruneFaceLossSetting, recorded.prune_max_covered_faces_lost,
-          given.prune_max_covered_faces_lost);
+  for (const std::string& key : keys) {
+    const auto was = recorded.find(key);
+    const auto now = given.find(key);
+    if (was == recorded.end() || now == given.end() || was->second == now->second) continue;
+    changes += fmt::format("{}{} {} (given {})", changes.empty() ? "" : ", ", key, was->second,
+                           now->second);
+  }
   return changes;
+}
+
+std::vector<std::string> PlannerAssignments(const PlannerSettings& settings) {
+  std::vector<std::string> assignments;
+  for (const auto& [key, value] : settings) assignments.push_back(key + "=" + value);
+  return assignments;
 }
 
 }  // namespace avc::orchestrator

@@ -1,37 +1,42 @@
 #pragma once
 
-// The planner settings a scan started with, kept in scan.json's "options". A resumed scan runs
-// the planner again over its own record and must ask for the same views, so it takes these
-// settings from the record; a resume whose command line asks for other ones is refused.
+// The planner settings a scan started with ("name=value" for avc-planner's plan jobs, see
+// services/planner/plan_settings.h), kept in scan.json's "options.planner_settings". A resumed
+// scan plans again over its own record and must ask for the same views, so it plans with these
+// settings; a resume whose command line asks for other ones is refused.
 
+#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
-
-#include "services/planner/active_vision.h"
+#include <vector>
 
 namespace avc::orchestrator {
 
-// Writes the recorded settings into options (keys max_views, levels, views_per_level,
-// prune_face_loss).
-void RecordPlannerSettings(const planner::ActiveVisionOptions& planner, nlohmann::json* options);
+using PlannerSettings = std::map<std::string, std::string>;
 
-// Sets planner's recorded settings from a scan's "options". A key a scan from an older version
-// lacks keeps the value that version used (the default). Throws std::runtime_error naming the
-// key when a recorded value has the wrong type or is out of range: scan.json was edited or
-// damaged, and a guess would plan other views than those on disk.
-void RestorePlannerSettings(const nlohmann::json& options, planner::ActiveVisionOptions* planner);
-
-// The keys in scan.json's "options".
+// The keys of Algorithm 1's counts, which `avc scan` sets from its flags.
 inline constexpr char kMaxViewsSetting[] = "max_views";
 inline constexpr char kLevelsSetting[] = "levels";
 inline constexpr char kViewsPerLevelSetting[] = "views_per_level";
 inline constexpr char kPruneFaceLossSetting[] = "prune_face_loss";
 
-// Of the settings named in keys, those given changes from recorded, as "max_views 14 (given 50),
-// ..."; empty when none changes.
-std::string DescribePlannerChanges(const planner::ActiveVisionOptions& recorded,
-                                   const planner::ActiveVisionOptions& given,
+// Writes settings into options["planner_settings"].
+void RecordPlannerSettings(const PlannerSettings& settings, nlohmann::json* options);
+
+// The settings a scan recorded: options["planner_settings"], or for a scan from an older AVC the
+// counts it kept beside the other options (max_views, levels, views_per_level,
+// prune_face_loss). Throws std::runtime_error naming the key when a value is not a string (or,
+// in an older scan, a number): scan.json was edited or damaged, and a guess would plan other
+// views than those on disk.
+PlannerSettings RecordedPlannerSettings(const nlohmann::json& options);
+
+// Of the settings named in keys, those given changes from recorded, as "max_views 14 (given
+// 50), ..."; empty when none changes. A key the scan did not record is no change.
+std::string DescribePlannerChanges(const PlannerSettings& recorded, const PlannerSettings& given,
                                    const std::set<std::string>& keys);
+
+// The settings as a plan job carries them: "name=value", sorted by name.
+std::vector<std::string> PlannerAssignments(const PlannerSettings& settings);
 
 }  // namespace avc::orchestrator

@@ -10,15 +10,15 @@
 
 #include "core/calibration/cell/calibration_yaml.h"
 #include "core/camera/camera_io.h"
-#include "core/kinematics/plant_keep_out.h"
 #include "core/kinematics/row_major_pose.h"
+#include "core/plan/plan_exchange.h"
 #include "core/stage/stage_files.h"
+#include "core/stage/stage_names.h"
 #include "core/util/clock.h"
 #include "core/util/file_io.h"
 #include "orchestrator/report_html.h"
 #include "orchestrator/scan_planner_settings.h"
 #include "orchestrator/scan_stage_jobs.h"
-#include "services/planner/calibrated_cell.h"
 
 namespace avc::orchestrator {
 namespace {
@@ -28,18 +28,18 @@ using std::chrono::milliseconds;
 
 constexpr char kCalibrationName[] = "calibration.yaml";
 
-ScanState StateOfStage(planner::ActiveVisionStage stage) {
-  switch (stage) {
-    case planner::ActiveVisionStage::kFrame:
+ScanState StateOfPhase(plan::PlanPhase phase) {
+  switch (phase) {
+    case plan::PlanPhase::kFrame:
       return ScanState::kFrame;
-    case planner::ActiveVisionStage::kInitialCapture:
+    case plan::PlanPhase::kInitialCapture:
       return ScanState::kInitialCapture;
-    case planner::ActiveVisionStage::kActiveVision:
+    case plan::PlanPhase::kActiveVision:
       return ScanState::kActiveVision;
-    case planner::ActiveVisionStage::kPruneViews:
+    case plan::PlanPhase::kPruneViews:
       return ScanState::kPruneViews;
   }
-  throw std::logic_error("unknown active vision stage");
+  throw std::logic_error("unknown planner phase");
 }
 
 // One run of the scan: the record, the machine and what the steps hand each other.
@@ -97,24 +97,24 @@ class ScanRun {
     if (fs::exists(dir_ / "scan.json")) {
       record_ = LoadScanRecord(dir_);
       machine_ = ScanStateMachine::Restore(record_.state, record_.interrupted);
-      planner::ActiveVisionOptions recorded = options_.planner;
-      RestorePlannerSettings(record_.options, &recorded);
-      const std::string changes =
-          DescribePlannerChanges(recorded, options_.planner, options_.planner_settings_given);
+      const PlannerSettings recorded = RecordedPlannerSettings(record_.options);
+      const std::string changes = DescribePlannerChanges(recorded, options_.planner_settings,
+                                                         options_.planner_settings_given);
       if (!changes.empty()) {
         throw std::runtime_error(
             fmt::format("a resumed scan keeps the planner settings it started with, so that it "
                         "asks for the same views: {}; resume without them",
                         changes));
       }
-      options_.planner = recorded;
+      // What the scan recorded wins; what an older scan did not record comes from the caller.
+      for (const auto& [key, value] : recorded) options_.planner_settings[key] = value;
       return;
     }
     record_.scan_id =
         options_.scan_id.empty() ? fs::absolute(dir_).filename().string() : options_.scan_id;
     record_.created_utime = clock_.NowMicros();
     record_.options = {{"calibration_file", options_.calibration_file.string()}};
-    RecordPlannerSettings(options_.planner, &record_.options);
+    RecordPlannerSettings(options_.planner_settings, &record_.options);
     Persist();
   }
 
@@ -240,34 +240,70 @@ class ScanRun {
     calibration_ = calibration::LoadCalibration(kept);
   }
 
+  // Algorithm 1 as plan jobs for avc-planner: each answer names the next view, which is
+  // captured (or answered from disk on a resume) and sent back with its mask in the next job,
+  // until the final plan.
   void CaptureViews() {
     EnsureCalibration();
     PowerArm();  // after a restart of the arm's driver or controller
-    const cell::CellModel model = planner::CellModelFromCalibration(*calibration_);
+    ScanCaptureOptions capture_options = options_.capture;
+    capture_options.image_width = calibration_->intrinsics.width;
+    capture_options.image_height = calibration_->intrinsics.height;
     ScanCapture capture(
-        cell_, dir_, record_, [this] { Persist(); }, options_.capture,
+        cell_, dir_, record_, [this] { Persist(); }, capture_options,
         [this](const std::string& line) { Report(line); });
-    const planner::ActiveVisionResult result = planner::RunActiveVision(
-        model, [&](const planner::CellView& view) { return capture(view); }, options_.planner,
-        [&](planner::ActiveVisionStage stage) {
-          // A resumed scan replays the stages it had passed: only later ones are entered.
-          const ScanState state = StateOfStage(stage);
-          if (Row(state).step > Row(machine_.state()).step) Enter(state, "");
-        },
-        [&](const ppr::PlantProxy& proxy) {
-          capture.SetPlantKeepOut(kinematics::PlantKeepOutFromVoxels(
-              proxy.OccupiedCentres(), proxy.voxel_size(), calibration_->T_base_table,
-              options_.capture.plant_keep_out_margin));
-        });
-    if (machine_.state() != ScanState::kPruneViews) Enter(ScanState::kPruneViews, "");
+    plan::PlanRequest request;
+    plan::PlanAnswer answer;
+    for (;;) {
+      answer = Plan(request);
+      EnterPlannerPhase(answer.phase);
+      capture.SetPlantKeepOut(answer.keep_out);
+      if (answer.final_plan) break;
+      plan::AnsweredView answered;
+      answered.view = *answer.next;
+      if (const std::optional<cv::Mat> mask = capture(*answer.next)) {
+        answered.mask_png = plan::EncodeMask(*mask);
+      }
+      request.answered.push_back(std::move(answered));
+    }
+    EnterPlannerPhase(plan::PlanPhase::kPruneViews);
     outcome_.captured_now += capture.taken();
     outcome_.reused += capture.reused();
-    MarkPlannedViews(record_, result, options_.capture.pose_tolerance);
-    record_.options["planner_notes"] = result.notes;
-    record_.options["patches"] = result.patches;
-    record_.options["failing_patches"] = result.failing_patches;
+    const plan::FinalPlan& final_plan = *answer.final_plan;
+    MarkPlannedViews(record_, final_plan, options_.capture.pose_tolerance);
+    record_.options["planner_notes"] = final_plan.notes;
+    record_.options["patches"] = final_plan.patches;
+    record_.options["failing_patches"] = final_plan.failing_patches;
+    record_.options["planner_in_force"] = answer.settings;
     WriteKeptCameras();
     Persist();
+  }
+
+  // Enters the planner's phase and any it went through since the last answer (the orbit can
+  // end the plan when it spends every view). A resumed scan replays the phases it had passed:
+  // only later ones are entered.
+  void EnterPlannerPhase(plan::PlanPhase phase) {
+    for (int p = static_cast<int>(plan::PlanPhase::kFrame); p <= static_cast<int>(phase); ++p) {
+      const ScanState state = StateOfPhase(static_cast<plan::PlanPhase>(p));
+      if (Row(state).step > Row(machine_.state()).step) Enter(state, "");
+    }
+  }
+
+  // One plan job: the calibration and the answered views to avc-planner, its answer back.
+  plan::PlanAnswer Plan(const plan::PlanRequest& request) {
+    const fs::path folder = dir_ / "plan";
+    fs::remove_all(folder);
+    plan::WritePlanRequest(request, folder);
+    fs::copy_file(dir_ / kCalibrationName, folder / kCalibrationName);
+    std::vector<std::string> inputs = plan::PlanRequestFiles(request);
+    inputs.push_back(kCalibrationName);
+    const stage::StageAnswer answer = stages_.Run(
+        StageRequest({stage::kPlanService, stage::kPlanStage, folder, inputs},
+                     PlannerAssignments(options_.planner_settings)),
+        [&](const std::string& line) { Report(fmt::format("{}: {}", stage::kPlanService, line)); },
+        [this] { return StopRequested(); });
+    stage::UnpackFiles(answer.files, folder / "answer");
+    return plan::ReadPlanAnswer(folder / "answer");
   }
 
   // cameras.json and colmap/ list the kept views, placed by the calibration from the state the
@@ -293,8 +329,8 @@ class ScanRun {
 
   // Sends the stage its files, waits for its answer, and only then writes what it made into
   // `into`: a stage that fails or answers wrongly leaves nothing of its answer behind.
-  void RunStage(const StageJobSpec& job, const std::vector<std::string>& settings,
-                const fs::path& into) {
+  stage::StageRequest StageRequest(const StageJobSpec& job,
+                                   const std::vector<std::string>& settings) const {
     stage::StageRequest request;
     request.service = job.service;
     request.stage = job.stage;
@@ -303,6 +339,12 @@ class ScanRun {
     request.files = stage::PackFiles(job.folder, job.inputs);
     request.timeout = options_.stage_timeout;
     request.silence_timeout = options_.stage_silence_timeout;
+    return request;
+  }
+
+  void RunStage(const StageJobSpec& job, const std::vector<std::string>& settings,
+                const fs::path& into) {
+    const stage::StageRequest request = StageRequest(job, settings);
     Report(fmt::format("{}: {} files ({:.1f} MB) to {}", job.stage, request.files.size(),
                        stage::FileBytes(request.files) * 1e-6, job.service));
     const stage::StageAnswer answer = stages_.Run(

@@ -6,8 +6,10 @@
 //
 //   CHECK_DEVICES     the drivers READY, the arm powered and its brakes released
 //   LOAD_CALIBRATION  calibration.yaml read, checked against the camera, kept in the scan
-//   FRAME .. PRUNE_VIEWS  Algorithm 1 through the drivers (scan_capture.h); the planner is
-//                     deterministic, so a resumed scan replays it from the recorded images
+//   FRAME .. PRUNE_VIEWS  Algorithm 1: plan jobs for avc-planner (core/plan/plan_exchange.h),
+//                     one per view, each view captured through the drivers (scan_capture.h);
+//                     the planner is deterministic, so a resumed scan plans again from the
+//                     recorded images
 //   BUILD             masks, plant proxy and MVS on the kept views   -> model/ppr.bt, points.ply
 //   MERGE_CLUSTER     merging and Algorithm 2 from those files        -> model/clusters.ply
 //   SURFACE, TRAITS   Algorithm 3 and the traits                     -> model/mesh.ply, traits.*
@@ -35,8 +37,8 @@
 #include "core/stage/stage_client.h"
 #include "drivers/client/cell_client.h"
 #include "orchestrator/scan_capture.h"
+#include "orchestrator/scan_planner_settings.h"
 #include "orchestrator/scan_record.h"
-#include "services/planner/active_vision.h"
 
 namespace avc::orchestrator {
 
@@ -44,14 +46,16 @@ struct ScanRunOptions {
   std::filesystem::path scan_dir;          // created; holds scan.json once started
   std::string scan_id;                     // default: the directory's name
   std::filesystem::path calibration_file;  // default: the scan's own calibration.yaml
-  planner::ActiveVisionOptions planner;
-  // A resumed scan plans with the settings it started with (scan_planner_settings.h); a resume
-  // refuses to change those the caller chose on purpose, named here by their keys there.
+  // avc-planner's settings for this scan (services/planner/plan_settings.h). A resumed scan
+  // plans with the settings it started with (scan_planner_settings.h); a resume refuses to
+  // change those the caller chose on purpose, named here by their keys.
+  PlannerSettings planner_settings;
   std::set<std::string> planner_settings_given;
   ScanCaptureOptions capture;
   // "section.field=value" overrides of avc-builder's own configuration for this scan's build.
   std::vector<std::string> build_settings;
-  // The longest a stage may take, and the longest its service may go without a heartbeat.
+  // The longest a stage (or one plan job) may take, and the longest its service may go without
+  // a heartbeat.
   std::chrono::milliseconds stage_timeout{std::chrono::minutes(30)};
   std::chrono::milliseconds stage_silence_timeout{std::chrono::seconds(15)};
   std::chrono::milliseconds ready_timeout{30000};

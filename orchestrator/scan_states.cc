@@ -19,10 +19,13 @@ const std::string kCamera = "avc-camera";
 const std::string kBuilder = "avc-builder";
 const std::string kClusterer = "avc-clusterer";
 const std::string kSurfacer = "avc-surfacer";
+const std::string kPlanner = "avc-planner";
 
 std::vector<StateRow> BuildTable() {
-  // The processing states are jobs for the stage services over the bus (scan_stage_jobs.h).
+  // The planning and processing states are jobs for the stage services over the bus (plan jobs,
+  // scan_stage_jobs.h).
   const std::vector<std::string> cell = {kRobot, kTurntable, kCamera};
+  const std::vector<std::string> planning = {kRobot, kTurntable, kCamera, kPlanner};
   // Rows in enum order, columns aligned by hand. `next` holds each state's own successors; the
   // edges all working states share (interruptions, resume) are added below from the `working`
   // column, so they are stated once.
@@ -38,13 +41,13 @@ std::vector<StateRow> BuildTable() {
      "collect board views and solve intrinsics, hand-eye and axis"},
     {S::kLoadCalibration, "LOAD_CALIBRATION", true,   2, {},            {S::kFrame},
      "load calibration.yaml made earlier; the scan keeps its copy"},
-    {S::kFrame,           "FRAME",            true,   3, cell,          {S::kInitialCapture},
+    {S::kFrame,           "FRAME",            true,   3, planning,      {S::kInitialCapture},
      "frame the plant from live views at the first height"},
-    {S::kInitialCapture,  "INITIAL_CAPTURE",  true,   4, cell,          {S::kActiveVision},
+    {S::kInitialCapture,  "INITIAL_CAPTURE",  true,   4, planning,      {S::kActiveVision},
      "the 3x10 orbit (each height framed first); carve the plant proxy"},
-    {S::kActiveVision,    "ACTIVE_VISION",    true,   5, cell,          {S::kPruneViews},
+    {S::kActiveVision,    "ACTIVE_VISION",    true,   5, planning,      {S::kPruneViews},
      "score the proxy's surface patches; capture next-best views"},
-    {S::kPruneViews,      "PRUNE_VIEWS",      true,   6, {},            {S::kBuild},
+    {S::kPruneViews,      "PRUNE_VIEWS",      true,   6, {kPlanner},    {S::kBuild},
      "drop redundant views"},
     {S::kBuild,           "BUILD",            true,   7, {kBuilder},    {S::kMergeCluster},
      "masks, plant proxy and multi-view stereo from the kept views"},

@@ -179,8 +179,9 @@ class ChaosRun {
 }  // namespace
 
 const std::vector<std::string>& ChaosVictims() {
-  static const std::vector<std::string> victims = {"avc-sim",    "avc-robot",  "avc-turntable",
-                                                   "avc-camera", "avc-record", "avc-scan"};
+  static const std::vector<std::string> victims = {
+      "avc-sim",     "avc-robot",   "avc-turntable", "avc-camera",   "avc-record",
+      "avc-planner", "avc-builder", "avc-clusterer", "avc-surfacer", "avc-scan"};
   return victims;
 }
 

@@ -176,7 +176,7 @@ CellProcesses::CellProcesses(const CellProcessOptions& options)
   Start("avc-camera", fixed({avc, "camera", "--port", fmt::format("ptpip:127.0.0.1:{}", camera),
                              "--no-usb-watch"}));
   if (options.stages) {
-    for (const char* stage : {"builder", "clusterer", "surfacer"}) {
+    for (const char* stage : {"planner", "builder", "clusterer", "surfacer"}) {
       Start(fmt::format("avc-{}", stage), fixed({avc, stage}));
     }
   }

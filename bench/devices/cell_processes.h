@@ -2,7 +2,8 @@
 
 // The simulated cell as the separate processes a lab runs: `avc sim cell` (all emulators) plus
 // the three drivers (`avc robot`, `avc turntable`, `avc camera`) pointed at it over the real
-// protocols, the three reconstruction stages (`avc builder`, `avc clusterer`, `avc surfacer`),
+// protocols, the planner and the three reconstruction stages (`avc planner`, `avc builder`,
+// `avc clusterer`, `avc surfacer`),
 // talking LCM on the given URLs, and optionally a recorder (`avc record`). Used by
 // `avc bench devices`, `avc bench chaos` and the end-to-end tests. Ports are picked free at start;
 // logs land in work_dir. The drivers obey only commands signed with the cell's key,
@@ -36,7 +37,8 @@ struct CellProcessOptions {
   std::vector<std::string> extra_sim_args;
   // Also run `avc record` for the cell ("avc-record"), into work_dir/recordings/.
   bool record = false;
-  // Run the stage services a scan's reconstruction needs (avc-builder, -clusterer, -surfacer).
+  // Run the services a scan plans and reconstructs with (avc-planner, -builder, -clusterer,
+  // -surfacer).
   bool stages = true;
 };
 

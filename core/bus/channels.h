@@ -24,7 +24,6 @@ inline constexpr std::string_view kCaptureRequest = "CAPTURE_REQUEST";
 inline constexpr std::string_view kCamera = "CAMERA";
 inline constexpr std::string_view kCameraQuery = "CAMERA_QUERY";
 inline constexpr std::string_view kCalibration = "CALIBRATION";
-inline constexpr std::string_view kViewPlan = "VIEW_PLAN";
 inline constexpr std::string_view kOrchestratorState = "ORCH_STATE";
 inline constexpr std::string_view kScanCameras = "SCAN_CAMERAS";
 inline constexpr std::string_view kProductAck = "PRODUCT_ACK";
@@ -58,7 +57,6 @@ inline constexpr std::array kAll = {kHeartbeat,
                                     kCamera,
                                     kCameraQuery,
                                     kCalibration,
-                                    kViewPlan,
                                     kOrchestratorState,
                                     kScanCameras,
                                     kProductAck,

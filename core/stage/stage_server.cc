@@ -136,6 +136,7 @@ avc::stage_result_t StageServer::RunJob(const avc::stage_job_t& job, const fs::p
     work.input_dir = folder / "in";
     work.output_dir = folder / "out";
     work.settings = job.settings;
+    work.scan_id = job.scan_id;
     fs::create_directories(work.input_dir);
     fs::create_directories(work.output_dir);
     UnpackFiles(job.files, work.input_dir);

@@ -35,6 +35,7 @@ struct StageWork {
   std::filesystem::path input_dir;    // the job's files
   std::filesystem::path output_dir;   // empty; everything written here is sent back
   std::vector<std::string> settings;  // the job's "section.field=value" overrides
+  std::string scan_id;                // the scan the job is for
   // A line of progress ("mvs 12/36"); safe from the worker thread.
   std::function<void(const std::string&)> progress;
 };

@@ -137,7 +137,8 @@ TEST(LaunchFile, SimulatedCellLaunchFilesAreValid) {
   // A scan needs the reconstruction stages; a calibration does not.
   for (const auto& [file, expected] : std::vector<std::pair<std::string, V>>{
            {"sim-cell.toml",
-            {"sim", "robot", "turntable", "camera", "builder", "clusterer", "surfacer", "record"}},
+            {"sim", "robot", "turntable", "camera", "planner", "builder", "clusterer", "surfacer",
+             "record"}},
            {"sim-calibration.toml", {"sim", "robot", "turntable", "camera", "record"}}}) {
     SCOPED_TRACE(file);
     const LaunchSpec spec = LoadLaunchFile((launch / file).string());

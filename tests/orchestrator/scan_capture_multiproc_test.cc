@@ -36,8 +36,8 @@ using std::chrono::milliseconds;
 constexpr int kWidth = 320, kHeight = 240;
 
 // Views around the plant at one height, as the planner realises them in the nominal cell.
-std::vector<planner::CellView> ViewsAround(const sim::CellTruth& model, int count) {
-  std::vector<planner::CellView> views;
+std::vector<plan::ViewRequest> ViewsAround(const sim::CellTruth& model, int count) {
+  std::vector<plan::ViewRequest> views;
   const Eigen::Vector3d target(0, 0, 0.08);
   kinematics::JointVector joints = sim::StartJoints(model);
   for (int n = 0; n < count; ++n) {
@@ -47,7 +47,7 @@ std::vector<planner::CellView> ViewsAround(const sim::CellTruth& model, int coun
     const auto view = planner::RealiseView(model, eye, target, {}, joints);
     if (!view) throw std::runtime_error("test view unreachable");
     joints = view->joints;
-    views.push_back(*view);
+    views.push_back({view->joints, view->turntable_angle});
   }
   return views;
 }
@@ -75,7 +75,7 @@ TEST(ScanCaptureMultiproc, KeepsEveryImageAndResumesWithoutCapturingAgain) {
   model_options.width = kWidth;
   model_options.height = kHeight;
   const sim::CellTruth model = sim::MakeCell(model_options);
-  const std::vector<planner::CellView> views = ViewsAround(model, 4);
+  const std::vector<plan::ViewRequest> views = ViewsAround(model, 4);
 
   bus::Bus bus(bus_options);
   bus::EventLoop loop;
@@ -115,7 +115,7 @@ TEST(ScanCaptureMultiproc, KeepsEveryImageAndResumesWithoutCapturingAgain) {
       EXPECT_EQ(saves, 3);
 
       // A joint target outside the arm's limits is refused by the driver: skipped, not fatal.
-      planner::CellView impossible = views[3];
+      plan::ViewRequest impossible = views[3];
       impossible.joints[1] = 7.0;
       EXPECT_FALSE(capture(impossible).has_value());
       EXPECT_EQ(record.captures.size(), 3u);
@@ -181,10 +181,14 @@ TEST(ScanCaptureMultiproc, KeepsEveryImageAndResumesWithoutCapturingAgain) {
     sim::RenderDatasetOptions other_options = model_options;
     other_options.width = 2 * kWidth;
     other_options.height = 2 * kHeight;
-    const planner::CellView other_camera = ViewsAround(sim::MakeCell(other_options), 4)[0];
+    const plan::ViewRequest other_camera = ViewsAround(sim::MakeCell(other_options), 4)[0];
     ScanRecord fresh;
     const fs::path other_dir = dir.path() / "other-camera";
-    ScanCapture mismatched(client, other_dir, fresh, [] {});
+    ScanCaptureOptions other_calibration;
+    other_calibration.image_width = other_options.width;
+    other_calibration.image_height = other_options.height;
+    ScanCapture mismatched(
+        client, other_dir, fresh, [] {}, other_calibration);
     try {
       mismatched(other_camera);
       ADD_FAILURE() << "a calibration of another camera must stop the scan";

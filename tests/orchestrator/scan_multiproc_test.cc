@@ -270,11 +270,12 @@ TEST(ScanMultiproc, DevicesKilledDuringTheScanAreRestartedAndTheScanFinishes) {
   const bus::BusOptions bus_options = bus::ResolveBusOptions({}, "scan-kill-test");
   bench::CellProcesses cell(TestCell(bus_options, dir.path()));
   const fs::path log = dir.path() / "scan.log";
-  // Which process dies after how many recorded captures; then avc-builder while it has the
-  // scan's build job (the other stages take too little time here to be caught reliably: the
-  // chaos bench kills them at random).
+  // Which process dies after how many recorded captures (avc-planner mid-plan: the restarted
+  // planner replays the views it is sent); then avc-builder while it has the scan's build job
+  // (the other stages take too little time here to be caught reliably: the chaos bench kills
+  // them at random).
   const std::vector<std::pair<size_t, std::string>> kills = {
-      {3, "avc-robot"}, {6, "avc-camera"}, {9, "avc-turntable"}};
+      {3, "avc-robot"}, {6, "avc-camera"}, {9, "avc-turntable"}, {12, "avc-planner"}};
   const std::vector<std::pair<std::string, std::string>> stage_kills = {{"BUILD", "avc-builder"}};
   size_t next_kill = 0;
   size_t next_stage_kill = 0;

@@ -186,18 +186,23 @@ TEST(ScanStates, RestoredMachineResumesAtItsPersistedState) {
 }
 
 TEST(ScanStates, RequiredServices) {
-  // The devices for the states that move or capture; each processing stage its own service.
+  // The devices for the states that move or capture, with the planner where it plans; each
+  // processing stage its own service.
   using V = std::vector<std::string>;
   const V cell = {"avc-robot", "avc-turntable", "avc-camera"};
-  for (S state :
-       {S::kCheckDevices, S::kCalibrate, S::kFrame, S::kInitialCapture, S::kActiveVision}) {
+  for (S state : {S::kCheckDevices, S::kCalibrate}) {
     EXPECT_EQ(RequiredServices(state), cell) << StateName(state);
   }
+  const V planning = {"avc-robot", "avc-turntable", "avc-camera", "avc-planner"};
+  for (S state : {S::kFrame, S::kInitialCapture, S::kActiveVision}) {
+    EXPECT_EQ(RequiredServices(state), planning) << StateName(state);
+  }
+  EXPECT_EQ(RequiredServices(S::kPruneViews), V{"avc-planner"});
   EXPECT_EQ(RequiredServices(S::kBuild), V{"avc-builder"});
   EXPECT_EQ(RequiredServices(S::kMergeCluster), V{"avc-clusterer"});
   EXPECT_EQ(RequiredServices(S::kSurface), V{"avc-surfacer"});
-  for (S state : {S::kIdle, S::kLoadCalibration, S::kPruneViews, S::kTraits, S::kReport, S::kDone,
-                  S::kPaused, S::kFault, S::kAborted}) {
+  for (S state : {S::kIdle, S::kLoadCalibration, S::kTraits, S::kReport, S::kDone, S::kPaused,
+                  S::kFault, S::kAborted}) {
     EXPECT_TRUE(RequiredServices(state).empty()) << StateName(state);
   }
 }

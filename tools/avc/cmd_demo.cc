@@ -172,8 +172,7 @@ int RunDemo(const DemoArgs& args) {
   orchestrator::ScanRunOptions scan;
   scan.scan_dir = dir;
   scan.calibration_file = calibration;
-  scan.planner = args.planner;
-  scan.planner.reach.envelope = kinematics::PlanningEnvelope(sim::NominalCellEnvelope());
+  scan.planner_settings = PlanJobSettings(args.planner, sim::NominalCellEnvelope());
   scan.stop_requested = [&loop] { return loop.quitting(); };
   ScanStateBroadcast broadcast(bus, loop);
   scan.on_kept_cameras = [&broadcast](const std::string& id, const auto& cameras) {

@@ -71,9 +71,8 @@ int RunScanCommand(const ScanArgs& args) {
   orchestrator::ScanRunOptions options;
   options.scan_dir = dir;
   options.calibration_file = args.calibration;
-  options.planner = args.planner;
+  options.planner_settings = PlanJobSettings(args.planner, DriverEnvelopeOf(args.envelope));
   options.planner_settings_given = args.planner_settings_given;
-  options.planner.reach.envelope = PlanningEnvelopeOf(args.envelope);
   if (args.jpeg) options.capture.encoding = avc::image_t::ENCODING_JPEG;
   options.ready_timeout =
       std::chrono::milliseconds(static_cast<int64_t>(args.ready_timeout_s * 1e3));
@@ -105,8 +104,10 @@ void RegisterScan(CLI::App& root, int* exit_code) {
       "Scan a plant in the cell, unattended: check the devices, load the calibration, frame the\n"
       "plant, take the 3x10 orbit, add next-best views until every part of the plant proxy is\n"
       "seen well (Algorithm 1), drop redundant views, then reconstruct (masks, proxy, MVS),\n"
-      "merge and cluster, surface and measure traits. Needs avc robot, avc turntable and avc\n"
-      "camera READY (real or `avc sim cell`).\n"
+      "merge and cluster, surface and measure traits. This process only sequences: it needs\n"
+      "avc robot, avc turntable and avc camera (real or `avc sim cell`) and the services that\n"
+      "compute, avc planner, avc builder, avc clusterer and avc surfacer, READY on the bus\n"
+      "(on this machine or others: `avc up launch/lab-three-hosts.toml`).\n"
       "Writes DIR/images/, cameras.json, colmap/, calibration.yaml, model/ (ppr.bt, points.ply,\n"
       "merged.ply, clusters.ply, mesh.ply, traits.csv, traits.json), report.json, report.html\n"
       "and scan.json, which is saved after every step: `avc scan --resume DIR` continues after a\n"

@@ -28,6 +28,7 @@ void RegisterBuilder(CLI::App& root, int* exit_code);
 void RegisterCluster(CLI::App& root, int* exit_code);
 void RegisterClusterer(CLI::App& root, int* exit_code);
 void RegisterSurfacer(CLI::App& root, int* exit_code);
+void RegisterPlanner(CLI::App& root, int* exit_code);
 void RegisterScan(CLI::App& root, int* exit_code);
 void RegisterDemo(CLI::App& root, int* exit_code);
 void RegisterReport(CLI::App& root, int* exit_code);

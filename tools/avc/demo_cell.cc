@@ -40,8 +40,8 @@ std::string DemoLaunchFile(const DemoCellOptions& options, const fs::path& key_f
   std::vector<std::string> sim_args = {"sim", "cell", "--link-dir", link_dir};
   sim_args.insert(sim_args.end(), options.sim_args.begin(), options.sim_args.end());
   std::string text = fmt::format(
-      "# Written by avc demo: the simulated cell, the three drivers, the three reconstruction "
-      "stages{}.\n"
+      "# Written by avc demo: the simulated cell, the three drivers, the planner and the three "
+      "reconstruction stages{}.\n"
       "log_dir = {}\n\n",
       options.record_to.empty() ? "" : " and a recorder",
       Quoted((options.work_dir / "logs").string()));
@@ -56,7 +56,9 @@ std::string DemoLaunchFile(const DemoCellOptions& options, const fs::path& key_f
   process("robot", robot_args);
   process("turntable", {"turntable", "--device", link_dir + "/lt360", "--key", key_file.string()});
   process("camera", {"camera", "--port", "ptpip:127.0.0.1:15740", "--no-usb-watch"});
-  // The reconstruction stages, each its own process: the scan sends them jobs over the bus.
+  // The planner and the reconstruction stages, each its own process: the scan sends them jobs
+  // over the bus.
+  process("planner", {"planner"});
   process("builder", {"builder"});
   process("clusterer", {"clusterer"});
   process("surfacer", {"surfacer"});

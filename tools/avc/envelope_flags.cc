@@ -34,11 +34,17 @@ void ApplyEnvelopeFlags(const EnvelopeFlags& flags, kinematics::SafetyEnvelope* 
   }
 }
 
-std::optional<kinematics::SafetyEnvelope> PlanningEnvelopeOf(const EnvelopeFlags& flags) {
+std::optional<kinematics::SafetyEnvelope> DriverEnvelopeOf(const EnvelopeFlags& flags) {
   if (!flags.table_z && flags.keep_out.empty()) return std::nullopt;
   kinematics::SafetyEnvelope driver;
   ApplyEnvelopeFlags(flags, &driver);
-  return kinematics::PlanningEnvelope(driver);
+  return driver;
+}
+
+std::optional<kinematics::SafetyEnvelope> PlanningEnvelopeOf(const EnvelopeFlags& flags) {
+  const std::optional<kinematics::SafetyEnvelope> driver = DriverEnvelopeOf(flags);
+  if (!driver) return std::nullopt;
+  return kinematics::PlanningEnvelope(*driver);
 }
 
 }  // namespace avc::cli

@@ -24,8 +24,12 @@ void AddEnvelopeFlags(CLI::App* command, EnvelopeFlags* flags);
 // unset). Throws CLI::ValidationError when the result is not a usable envelope.
 void ApplyEnvelopeFlags(const EnvelopeFlags& flags, kinematics::SafetyEnvelope* envelope);
 
-// For avc scan and avc calibrate: the flags' envelope as a planner checks it
-// (kinematics::PlanningEnvelope), or none when neither --table-z nor --keep-out is given.
+// The flags' envelope as avc robot enforces it, or none when neither --table-z nor --keep-out
+// is given.
+std::optional<kinematics::SafetyEnvelope> DriverEnvelopeOf(const EnvelopeFlags& flags);
+
+// For avc calibrate: the flags' envelope as a planner checks it (kinematics::PlanningEnvelope),
+// or none when neither --table-z nor --keep-out is given.
 std::optional<kinematics::SafetyEnvelope> PlanningEnvelopeOf(const EnvelopeFlags& flags);
 
 }  // namespace avc::cli

@@ -40,6 +40,7 @@ int main(int argc, char** argv) {
   avc::cli::RegisterCluster(app, &exit_code);
   avc::cli::RegisterClusterer(app, &exit_code);
   avc::cli::RegisterSurfacer(app, &exit_code);
+  avc::cli::RegisterPlanner(app, &exit_code);
   avc::cli::RegisterScan(app, &exit_code);
   avc::cli::RegisterDemo(app, &exit_code);
   avc::cli::RegisterReport(app, &exit_code);

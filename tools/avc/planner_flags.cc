@@ -1,5 +1,9 @@
 #include "tools/avc/planner_flags.h"
 
+#include <fmt/format.h>
+
+#include "services/planner/plan_settings.h"
+
 namespace avc::cli {
 
 PlannerFlagOptions AddPlannerFlags(CLI::App* command, planner::ActiveVisionOptions* planner) {
@@ -17,6 +21,21 @@ PlannerFlagOptions AddPlannerFlags(CLI::App* command, planner::ActiveVisionOptio
           ->capture_default_str()
           ->check(CLI::Range(0.0, 1.0));
   return options;
+}
+
+std::map<std::string, std::string> PlanJobSettings(
+    const planner::ActiveVisionOptions& planner,
+    const std::optional<kinematics::SafetyEnvelope>& driver) {
+  std::map<std::string, std::string> settings = planner::DescribePlanSettings({planner});
+  if (!driver) return settings;
+  if (driver->table_z_base_m) settings["table_z"] = fmt::format("{}", *driver->table_z_base_m);
+  settings["table_clearance"] = fmt::format("{}", driver->table_clearance_m);
+  if (const auto& cylinder = driver->keep_out) {
+    settings["keep_out"] =
+        fmt::format("{} {} {} {} {}", cylinder->centre_base.x(), cylinder->centre_base.y(),
+                    cylinder->radius_m, cylinder->z_min_m, cylinder->z_max_m);
+  }
+  return settings;
 }
 
 }  // namespace avc::cli
