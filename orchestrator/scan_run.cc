@@ -275,6 +275,7 @@ class ScanRun {
     record_.options["patches"] = final_plan.patches;
     record_.options["failing_patches"] = final_plan.failing_patches;
     record_.options["planner_in_force"] = answer.settings;
+    record_.options["stages"][stage::kPlanStage] = plan_jobs_;
     WriteKeptCameras();
     Persist();
   }
@@ -303,6 +304,17 @@ class ScanRun {
         [&](const std::string& line) { Report(fmt::format("{}: {}", stage::kPlanService, line)); },
         [this] { return StopRequested(); });
     stage::UnpackFiles(answer.files, folder / "answer");
+    // This run's plan jobs, summed for the report.
+    const auto add = [this](const char* key, double value) {
+      plan_jobs_[key] = plan_jobs_.value(key, 0.0) + value;
+    };
+    plan_jobs_["service"] = stage::kPlanService;
+    add("jobs", 1);
+    add("stage_s", answer.stage_seconds);
+    add("wall_s", answer.wall_seconds);
+    add("bytes_sent", static_cast<double>(answer.bytes_sent));
+    add("bytes_received", static_cast<double>(answer.bytes_received));
+    add("sends", answer.sends);
     return plan::ReadPlanAnswer(folder / "answer");
   }
 
@@ -404,7 +416,8 @@ class ScanRun {
     report["traits"] = nlohmann::json::parse(ReadFile(model_dir_ / "traits.json"));
     report["surface"] = nlohmann::json::parse(ReadFile(model_dir_ / "surface.json"));
     report["files"] = {"images/",          "cameras.json",       "colmap/",
-                       kCalibrationName,   "model/ppr.bt",       "model/points.ply",
+                       kCalibrationName,   "plan/",              "model/ppr.bt",
+                       "model/points.ply",
                        "model/merged.ply", "model/clusters.ply", "model/clusters.lcm",
                        "model/mesh.ply",   "model/surface.json", "model/traits.csv",
                        "model/traits.json"};
@@ -424,6 +437,7 @@ class ScanRun {
   ScanStateMachine machine_;
   ScanOutcome outcome_;
   std::optional<calibration::CellCalibration> calibration_;
+  nlohmann::json plan_jobs_ = nlohmann::json::object();
 };
 
 }  // namespace

@@ -85,6 +85,7 @@ class ChaosRun {
     scan_.key_file = cell_->key().file;
     scan_.log = cell_options.work_dir / "avc-scan.log";
     if (!options.planner_args.empty()) scan_.planner_args = options.planner_args;
+    scan_.prefix = cell_options.cell_prefix;  // the scan runs beside the cell
   }
 
   void Run() {

@@ -113,10 +113,13 @@ CellProcesses::CellProcesses(const CellProcessOptions& options)
   const int rtde = FreeTcpPort(), primary = FreeTcpPort(), secondary = FreeTcpPort(),
             dashboard = FreeTcpPort(), camera = FreeTcpPort();
   const fs::path link_dir = work_dir_ / "sim";
+  const std::vector<std::string>& on_cell = options.cell_prefix;
   if (options.record) {  // first, so it hears the others start
     fs::create_directories(recordings_dir());
-    Start("avc-record", [this, avc] {
-      return std::vector<std::string>{avc, "record", "-o", NextRecording().string()};
+    Start("avc-record", [this, avc, on_cell] {
+      std::vector<std::string> argv = on_cell;
+      argv.insert(argv.end(), {avc, "record", "-o", NextRecording().string()});
+      return argv;
     });
   }
   std::vector<std::string> sim = {avc,
@@ -150,10 +153,11 @@ CellProcesses::CellProcesses(const CellProcessOptions& options)
                                   link_dir.string()};
   if (options.png) sim.push_back("--png");
   sim.insert(sim.end(), options.extra_sim_args.begin(), options.extra_sim_args.end());
-  const auto fixed = [](std::vector<std::string> argv) {
+  const auto fixed = [](const std::vector<std::string>& prefix, std::vector<std::string> argv) {
+    argv.insert(argv.begin(), prefix.begin(), prefix.end());
     return [argv = std::move(argv)] { return argv; };
   };
-  Start("avc-sim", fixed(sim));
+  Start("avc-sim", fixed(on_cell, sim));
   // The bench and turntable as the lab measured them: every move is checked against them.
   std::vector<std::string> robot = {avc,
                                     "robot",
@@ -169,15 +173,16 @@ CellProcesses::CellProcesses(const CellProcessOptions& options)
                                     key_file};
   const std::vector<std::string> envelope = sim::RobotEnvelopeArguments(sim::NominalCellEnvelope());
   robot.insert(robot.end(), envelope.begin(), envelope.end());
-  Start("avc-robot", fixed(robot));
+  Start("avc-robot", fixed(on_cell, robot));
   Start("avc-turntable",
-        fixed({avc, "turntable", "--device", (link_dir / "lt360").string(), "--speed",
-               fmt::format("{}", options.table_speed_deg_s), "--key", key_file}));
-  Start("avc-camera", fixed({avc, "camera", "--port", fmt::format("ptpip:127.0.0.1:{}", camera),
-                             "--no-usb-watch"}));
+        fixed(on_cell, {avc, "turntable", "--device", (link_dir / "lt360").string(), "--speed",
+                        fmt::format("{}", options.table_speed_deg_s), "--key", key_file}));
+  Start("avc-camera",
+        fixed(on_cell, {avc, "camera", "--port", fmt::format("ptpip:127.0.0.1:{}", camera),
+                        "--no-usb-watch"}));
   if (options.stages) {
     for (const char* stage : {"planner", "builder", "clusterer", "surfacer"}) {
-      Start(fmt::format("avc-{}", stage), fixed({avc, stage}));
+      Start(fmt::format("avc-{}", stage), fixed(options.service_prefix, {avc, stage}));
     }
   }
 }

@@ -40,6 +40,11 @@ struct CellProcessOptions {
   // Run the services a scan plans and reconstructs with (avc-planner, -builder, -clusterer,
   // -surfacer).
   bool stages = true;
+  // Put before the command line of the cell's processes (simulator, drivers, recorder) and of
+  // the services: {"ip", "netns", "exec", NAME} runs them in a network namespace (it execs the
+  // command, so the pid and the signals are the process's own).
+  std::vector<std::string> cell_prefix;
+  std::vector<std::string> service_prefix;
 };
 
 class CellProcesses {

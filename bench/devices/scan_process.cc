@@ -10,7 +10,8 @@ namespace fs = std::filesystem;
 launch::ChildProcess StartScanProcess(const std::vector<std::string>& args,
                                       const ScanProcessOptions& options) {
   launch::SpawnSpec spec;
-  spec.argv = {options.avc_binary.string(), "scan"};
+  spec.argv = options.prefix;
+  spec.argv.insert(spec.argv.end(), {options.avc_binary.string(), "scan"});
   spec.argv.insert(spec.argv.end(), args.begin(), args.end());
   spec.argv.insert(spec.argv.end(), {"--lcm-url", options.bus.control_url, "--bulk-url",
                                      options.bus.bulk_url, "--cell", options.bus.cell});

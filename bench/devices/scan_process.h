@@ -24,6 +24,8 @@ struct ScanProcessOptions {
   std::vector<std::string> planner_args = {"--max-views", "14", "--views-per-height", "6"};
   // The fixed envelope the cell's avc-robot enforces (CellProcesses), for the planner.
   std::vector<std::string> envelope_args = sim::RobotEnvelopeArguments(sim::NominalCellEnvelope());
+  // Put before `avc scan` (CellProcessOptions::cell_prefix).
+  std::vector<std::string> prefix;
 };
 
 // Starts `avc scan ARGS...` on the options' bus, with its planner arguments and key.
