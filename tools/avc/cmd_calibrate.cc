@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <stdexcept>
 
 #include "core/bus/bus.h"
 #include "core/calibration/cell/calibration_yaml.h"
@@ -145,9 +146,16 @@ void RegisterCalibrate(CLI::App& root, int* exit_code) {
       "turntable and avc camera up (real or `avc sim cell --chessboard 9x6`). It collects images\n"
       "over the board and while the table turns into FOLDER, then solves FOLDER/calibration.yaml.\n"
       "`avc calibrate collect` and `avc calibrate solve` run the two halves on their own.");
-  command->add_option("folder", args->folder, "dataset folder (created)")->required();
+  // Not required(): CLI11 gives a required positional the next word even when it names a
+  // subcommand, so `avc calibrate solve FOLDER` read "solve" as the folder.
+  command->add_option("folder", args->folder, "dataset folder (created)");
   AddCollectFlags(*command, *args);
   SetGuardedRun(command, exit_code, [args] {
+    if (args->folder.empty()) {
+      throw std::invalid_argument(
+          "give the dataset FOLDER (or `avc calibrate collect FOLDER` / `avc calibrate solve "
+          "FOLDER`)");
+    }
     RunCollect(*args);
     return RunSolve(*args);
   });

@@ -6,7 +6,12 @@
 namespace avc::cli {
 
 void SetGuardedRun(CLI::App* command, int* exit_code, std::function<int()> run) {
-  const std::string name = command->get_name();
+  // The whole command path ("calibrate solve"), so an error names what was run.
+  std::string name = command->get_name();
+  for (const CLI::App* parent = command->get_parent();
+       parent != nullptr && parent->get_parent() != nullptr; parent = parent->get_parent()) {
+    name = parent->get_name() + " " + name;
+  }
   command->callback([command, name, exit_code, run = std::move(run)] {
     // CLI11 runs a command's callback after its subcommand's: `avc camera list` must not go on
     // to run the camera service.

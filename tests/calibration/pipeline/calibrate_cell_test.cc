@@ -2,18 +2,23 @@
 // cell (the same poses `avc calibrate collect` plans, images of the simulated chessboard, flange
 // poses through the TRUE kinematics as the controller reports them): the calibration recovers the
 // true camera, hand-eye and turntable, so camera poses at unseen arm poses and table angles match
-// the truth; bad datasets are refused with the shot and the problem named.
+// the truth; bad datasets are refused with the shot and the problem named. The documented
+// command line, `avc calibrate solve FOLDER`, parses and solves the same dataset.
 
 #include "core/calibration/pipeline/calibrate_cell.h"
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
 #include <algorithm>
+#include <chrono>
 #include <fstream>
 #include <numbers>
 #include <opencv2/imgcodecs.hpp>
 
+#include "core/calibration/cell/calibration_yaml.h"
 #include "core/kinematics/forward_kinematics.h"
+#include "core/launch/child_process.h"
 #include "services/calibrator/calibration_plan.h"
 #include "sim/cell/perturbation.h"
 #include "sim/cell/view_selection.h"
@@ -127,6 +132,39 @@ TEST(CalibrateCell, RecoversTheSimulatedCellAndPredictsCamerasAtUnseenPoses) {
   EXPECT_LT(rotation_errors[rotation_errors.size() / 2], 0.05);
   EXPECT_LT(centre_errors.back(), 1e-3);
   EXPECT_LT(rotation_errors.back(), 0.1);
+}
+
+// `avc calibrate solve FOLDER` once read "solve" as the parent's FOLDER and failed with "no
+// command named 'FOLDER'"; errors were prefixed "avc solve:".
+TEST(CalibrateCell, TheDocumentedCommandLineSolvesADataset) {
+  testing::TempDir dir("avc-calibrate-cli");
+  const fs::path folder = dir / "dataset";
+  const RenderedDataset rendered = Render(folder);
+  const auto run = [&](const std::vector<std::string>& args, const fs::path& log) {
+    std::vector<std::string> argv = {testing::Executable("avc").string(), "calibrate"};
+    argv.insert(argv.end(), args.begin(), args.end());
+    launch::ChildProcess child = launch::ChildProcess::Spawn({argv, {}, "", log.string()});
+    const std::optional<int> status = child.WaitFor(std::chrono::milliseconds(60000));
+    return status && WIFEXITED(*status) ? WEXITSTATUS(*status) : -1;
+  };
+  ASSERT_EQ(run({"solve", folder.string()}, dir / "solve.log"), 0)
+      << testing::ReadFile(dir / "solve.log");
+  EXPECT_NE(testing::ReadFile(dir / "solve.log").find("hand-eye: 12 poses"), std::string::npos)
+      << testing::ReadFile(dir / "solve.log");
+  const CellCalibration solved = LoadCalibration(folder / "calibration.yaml");
+  EXPECT_NEAR(solved.intrinsics.fx, rendered.truth.intrinsics.fx, 1.5);
+  EXPECT_LT(
+      (solved.T_flange_cam.translation() - rendered.truth.T_flange_cam.translation()).norm(),
+      0.5e-3);
+
+  fs::create_directories(dir / "empty");
+  EXPECT_EQ(run({"solve", (dir / "empty").string()}, dir / "empty.log"), 1);
+  EXPECT_EQ(testing::ReadFile(dir / "empty.log").rfind("avc calibrate solve: ", 0), 0u)
+      << testing::ReadFile(dir / "empty.log");
+  EXPECT_EQ(run({}, dir / "nothing.log"), 1);
+  EXPECT_NE(testing::ReadFile(dir / "nothing.log").find("give the dataset FOLDER"),
+            std::string::npos)
+      << testing::ReadFile(dir / "nothing.log");
 }
 
 TEST(CalibrationDataset, RefusesBadDatasetsNamingTheShot) {
