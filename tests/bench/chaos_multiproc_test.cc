@@ -22,6 +22,7 @@
 #include "core/bus/bus_options.h"
 #include "core/launch/child_process.h"
 #include "core/util/sha256.h"
+#include "tests/bench/short_scan.h"
 #include "tests/support/test_support.h"
 
 namespace avc::bench {
@@ -29,31 +30,20 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr int kWidth = 1280, kHeight = 960;
-
 class ChaosMultiproc : public ::testing::Test {
  protected:
-  void SetUp() override { WriteNominalCalibration(dir_ / "calibration.yaml", kWidth, kHeight); }
+  void SetUp() override {
+    WriteNominalCalibration(dir_ / "calibration.yaml", testing::kShortScanWidth,
+                            testing::kShortScanHeight);
+  }
 
-  // The scan of scan_multiproc_test: the nominal cell, small and fast, on the test's bus.
+  // The short scan of cell `cell` on the test's bus.
   ChaosScanOptions Scan(const std::string& name, const std::string& cell,
                         const std::optional<ChaosFault>& fault) const {
-    ChaosScanOptions options;
-    options.label = name;
-    options.cell = CellOptionsOnBus(bus::ResolveBusOptions({}, "chaos-test"),
-                                    testing::Executable("avc"), dir_ / name / "cell");
-    options.cell.cell = cell;
-    options.cell.time_scale = 20;
-    options.cell.plant = "strap";
-    options.cell.triangles = 8000;
-    options.cell.width = kWidth;
-    options.cell.height = kHeight;
-    options.cell.png = true;
-    options.cell.extra_sim_args = {"--nominal-cell"};
-    options.scan_dir = dir_ / name / "plant";
-    options.calibration = dir_ / "calibration.yaml";
+    bus::BusOptions bus = bus::ResolveBusOptions({}, "chaos-test");
+    bus.cell = cell;
+    ChaosScanOptions options = testing::ShortScan(dir_.path(), name, bus);
     options.fault = fault;
-    options.timeout_s = 240;
     return options;
   }
 

@@ -21,14 +21,13 @@
 #include "bench/chaos/chaos_scan.h"
 #include "bench/devices/scan_process.h"
 #include "core/launch/child_process.h"
+#include "tests/bench/short_scan.h"
 #include "tests/support/test_support.h"
 
 namespace avc::bench {
 namespace {
 
 namespace fs = std::filesystem;
-
-constexpr int kWidth = 1280, kHeight = 960;
 
 // Runs a command to its end; its exit code (-1 when it did not exit), its output in `output`.
 int Run(const std::vector<std::string>& argv, const fs::path& log, std::string* output = nullptr) {
@@ -99,25 +98,13 @@ class TwoHosts {
   std::vector<std::string> created_;
 };
 
+// The short scan on its own URLs: ttl=1 lets the bus cross the link, ttl=0 keeps it on the host.
 ChaosScanOptions Scan(const testing::TempDir& dir, const std::string& name, int port, int ttl) {
-  ChaosScanOptions options;
-  options.label = name;
   bus::BusOptions bus;
   bus.control_url = fmt::format("udpm://239.255.76.67:{}?ttl={}", port, ttl);
   bus.bulk_url = fmt::format("udpm://239.255.76.67:{}?ttl={}&recv_buf_size=4194304", port + 1, ttl);
   bus.cell = "cell-two";
-  options.cell = CellOptionsOnBus(bus, testing::Executable("avc"), dir / name / "cell");
-  options.cell.time_scale = 20;
-  options.cell.plant = "strap";
-  options.cell.triangles = 8000;
-  options.cell.width = kWidth;
-  options.cell.height = kHeight;
-  options.cell.png = true;
-  options.cell.extra_sim_args = {"--nominal-cell"};
-  options.scan_dir = dir / name / "plant";
-  options.calibration = dir / "calibration.yaml";
-  options.timeout_s = 240;
-  return options;
+  return testing::ShortScan(dir.path(), name, bus);
 }
 
 TEST(TwoHostsMultiproc, TheScanWithItsServicesOnAnotherHostEndsAsOnOneHost) {
@@ -126,7 +113,8 @@ TEST(TwoHostsMultiproc, TheScanWithItsServicesOnAnotherHostEndsAsOnOneHost) {
   if (const std::string problem = hosts.Create(); !problem.empty()) {
     GTEST_SKIP() << "cannot make network namespaces here (needs root): " << problem;
   }
-  WriteNominalCalibration(dir / "calibration.yaml", kWidth, kHeight);
+  WriteNominalCalibration(dir / "calibration.yaml", testing::kShortScanWidth,
+                          testing::kShortScanHeight);
 
   const ChaosScanResult one_host = RunChaosScan(Scan(dir, "one-host", 7795, 0));
   ASSERT_TRUE(one_host.error.empty()) << one_host.error;

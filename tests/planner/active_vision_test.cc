@@ -18,6 +18,7 @@
 #include "sim/cell/view_selection.h"
 #include "sim/dataset/render_dataset.h"
 #include "sim/render/renderer.h"
+#include "tests/planner/label_mask.h"
 
 namespace avc::planner {
 namespace {
@@ -36,26 +37,6 @@ struct Plant {
 const Plant& TestPlant() {
   static const Plant plant;
   return plant;
-}
-
-// Renders the organ labels at a quarter size; plant = stem, petiole or leaf.
-std::optional<cv::Mat> LabelCapture(const sim::Scene& scene, const CellView& view) {
-  camera::Camera small = view.camera;
-  camera::Intrinsics& k = small.intrinsics;
-  const cv::Size full(k.width, k.height);
-  k.width /= 4;
-  k.height /= 4;
-  k.fx /= 4;
-  k.fy /= 4;
-  k.cx = (k.cx + 0.5) / 4 - 0.5;
-  k.cy = (k.cy + 0.5) / 4 - 0.5;
-  sim::RenderOptions options;
-  options.samples_per_pixel_axis = 1;
-  const sim::RenderResult frame = sim::Render(scene, small, options);
-  cv::Mat mask = (frame.labels >= geometry::labels::kStem);
-  cv::Mat resized;
-  cv::resize(mask, resized, full, 0, 0, cv::INTER_NEAREST);
-  return resized;
 }
 
 ActiveVisionOptions SmallRun() {
@@ -82,7 +63,7 @@ TEST(ActiveVision, FramesOrbitsAddsViewsAndPrunesWithoutLosingCoverage) {
         kinematics::CheckJointMove(driver, plant.cell.dh, arm, view.joints, 1.0, 1.0);
     if (!refusal.empty()) refusals.push_back(refusal);
     arm = view.joints;
-    return LabelCapture(plant.scene, view);
+    return std::optional(testing::LabelMask(plant.scene, view.camera));
   };
   // The proxy is announced when it is made from the first height and after each view after.
   std::vector<int> proxy_views;
@@ -175,7 +156,7 @@ TEST(ActiveVision, NoPlantAndFailedCapturesAreReported) {
   int calls = 0;
   const auto flaky = [&](const CellView& view) -> std::optional<cv::Mat> {
     if (++calls % 5 == 0) return std::nullopt;
-    return LabelCapture(plant.scene, view);
+    return std::optional(testing::LabelMask(plant.scene, view.camera));
   };
   ActiveVisionOptions options = SmallRun();
   options.max_views = 30;

@@ -22,6 +22,7 @@
 #include "sim/cell/cell_fixtures.h"
 #include "sim/dataset/render_dataset.h"
 #include "sim/render/renderer.h"
+#include "tests/planner/label_mask.h"
 #include "tests/support/test_support.h"
 
 namespace avc::planner {
@@ -40,25 +41,6 @@ struct Plant {
     truth = sim::MakeCell(options);
   }
 };
-
-// Organ labels rendered at a quarter of the camera's size, scaled back up: a perfect mask.
-cv::Mat LabelMask(const sim::Scene& scene, const camera::Camera& camera) {
-  camera::Camera small = camera;
-  camera::Intrinsics& k = small.intrinsics;
-  const cv::Size full(k.width, k.height);
-  k.width /= 4;
-  k.height /= 4;
-  k.fx /= 4;
-  k.fy /= 4;
-  k.cx = (k.cx + 0.5) / 4 - 0.5;
-  k.cy = (k.cy + 0.5) / 4 - 0.5;
-  sim::RenderOptions options;
-  options.samples_per_pixel_axis = 1;
-  const cv::Mat mask = sim::Render(scene, small, options).labels >= geometry::labels::kStem;
-  cv::Mat resized;
-  cv::resize(mask, resized, full, 0, 0, cv::INTER_NEAREST);
-  return resized;
-}
 
 class PlanStep : public ::testing::Test {
  protected:
@@ -90,7 +72,7 @@ class PlanStep : public ::testing::Test {
   }
 
   plan::AnsweredView Answer(const plan::ViewRequest& view) const {
-    return {view, plan::EncodeMask(LabelMask(
+    return {view, plan::EncodeMask(testing::LabelMask(
                       plant_.scene, cell::CameraAt(cell_, view.joints, view.table_angle)))};
   }
 
@@ -107,7 +89,7 @@ TEST_F(PlanStep, OneJobPerViewEndsWithTheSamePlanAsOneCall) {
   const ActiveVisionResult direct = RunActiveVision(
       cell_,
       [&](const CellView& view) -> std::optional<cv::Mat> {
-        return LabelMask(plant_.scene, view.camera);
+        return testing::LabelMask(plant_.scene, view.camera);
       },
       settings.planner);
   ASSERT_GE(direct.views.size(), 12u);

@@ -1,0 +1,118 @@
+// A scan's recording, played by Debian's lcm-logplayer into freshly started stage services: only
+// the jobs the scan sent (PRODUCT/STAGE_JOB, each carrying its input files: the images and
+// cameras, the points, the clusters), on a URL no cell uses, with nothing else running. The
+// services' answers must be the scan's model, byte for byte: the build's points and the surface's
+// mesh. The jobs are all a stage needs, so the log alone reproduces the scan's processing.
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <avc/heartbeat_t.hpp>
+#include <avc/stage_result_t.hpp>
+#include <chrono>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "bench/chaos/chaos_scan.h"
+#include "bench/devices/scan_process.h"
+#include "core/bus/bus.h"
+#include "core/bus/channels.h"
+#include "core/bus/event_loop.h"
+#include "core/launch/child_process.h"
+#include "core/products/product_receiver.h"
+#include "core/stage/stage_files.h"
+#include "core/util/sha256.h"
+#include "tests/bench/short_scan.h"
+#include "tests/support/test_support.h"
+
+namespace avc::bench {
+namespace {
+
+namespace fs = std::filesystem;
+using std::chrono::milliseconds;
+
+TEST(LogplayerReplay, TheScansJobsPlayedIntoFreshServicesGiveItsModel) {
+  testing::TempDir dir("avc-logplayer");
+  WriteNominalCalibration(dir / "calibration.yaml", testing::kShortScanWidth,
+                          testing::kShortScanHeight);
+  bus::BusOptions cell_bus = bus::ResolveBusOptions({}, "logplayer-test");
+  cell_bus.cell = "cell-log";
+  const ChaosScanResult scan = RunChaosScan(testing::ShortScan(dir.path(), "scan", cell_bus));
+  ASSERT_TRUE(scan.error.empty()) << scan.error;
+  std::vector<fs::path> logs;
+  for (const auto& entry : fs::directory_iterator(dir / "scan" / "cell" / "recordings")) {
+    logs.push_back(entry.path());
+  }
+  ASSERT_EQ(logs.size(), 1u);
+
+  // Fresh services on a URL of their own; control and bulk on one group, as the log mixes both.
+  const std::string url = "udpm://239.255.76.67:7801?ttl=0&recv_buf_size=4194304";
+  const auto args = [&](std::vector<std::string> argv) {
+    argv.insert(argv.end(), {"--lcm-url", url, "--bulk-url", url, "--cell", cell_bus.cell});
+    return argv;
+  };
+  const std::string avc = testing::Executable("avc").string();
+  std::vector<launch::ChildProcess> services;
+  for (const std::string stage : {"builder", "clusterer", "surfacer"}) {
+    services.push_back(launch::ChildProcess::Spawn(
+        {args({avc, stage}), {}, "", (dir / (stage + ".log")).string()}));
+  }
+  bus::BusOptions replay_bus = cell_bus;
+  replay_bus.control_url = replay_bus.bulk_url = url;
+  bus::Bus bus(replay_bus);
+  bus::EventLoop loop;
+  bus.AttachTo(loop);
+  std::set<std::string> ready;
+  bus.Subscribe<avc::heartbeat_t>(channels::kHeartbeat,
+                                  [&](const avc::heartbeat_t& beat, const bus::RxInfo&) {
+                                    if (beat.state == avc::heartbeat_t::STATE_READY) {
+                                      ready.insert(beat.service);
+                                    }
+                                  });
+  // The scan's answers went to its own receiver, "avc-scan": this test takes that name.
+  std::map<std::string, avc::stage_result_t> results;
+  products::ProductReceiver receiver(
+      bus, "avc-scan", std::string(channels::kProductStageResult),
+      [&](const products::Product& product, const bus::RxInfo&) {
+        avc::stage_result_t result;
+        if (result.decode(product.payload.data(), 0, static_cast<int>(product.payload.size())) >
+            0) {
+          results[result.stage] = result;
+        }
+      });
+  ASSERT_TRUE(loop.RunUntil([&] { return ready.size() == 3; }, milliseconds(20000)))
+      << ready.size() << " services READY";
+
+  launch::ChildProcess player = launch::ChildProcess::Spawn(
+      {{"lcm-logplayer", "-e", fmt::format("^{}/PRODUCT/STAGE_JOB$", cell_bus.cell), "-l", url,
+        logs[0].string()},
+       {},
+       "",
+       (dir / "lcm-logplayer.log").string()});
+  const bool answered = loop.RunUntil(
+      [&] {
+        return results.count("build") && results.count("cluster") && results.count("surface");
+      },
+      milliseconds(180000));
+  ASSERT_TRUE(answered) << results.size() << " of 3 stages answered\n"
+                        << testing::ReadFile(dir / "lcm-logplayer.log")
+                        << testing::ReadFile(dir / "builder.log");
+  for (const auto& [stage, result] : results)
+    EXPECT_TRUE(result.ok) << stage << ": " << result.error;
+  stage::UnpackFiles(results.at("build").files, dir / "replayed");
+  stage::UnpackFiles(results.at("surface").files, dir / "replayed");
+  const fs::path model = dir / "scan" / "plant" / "model";
+  EXPECT_EQ(Sha256Hex(testing::ReadFile(dir / "replayed" / "points.ply")),
+            Sha256Hex(testing::ReadFile(model / "points.ply")));
+  EXPECT_EQ(Sha256Hex(testing::ReadFile(dir / "replayed" / "mesh.ply")), scan.mesh_sha256);
+  EXPECT_EQ(Sha256Hex(testing::ReadFile(dir / "replayed" / "traits.csv")),
+            Sha256Hex(testing::ReadFile(model / "traits.csv")));
+  player.WaitFor(milliseconds(60000));
+  for (launch::ChildProcess& service : services) service.Signal(SIGTERM);
+}
+
+}  // namespace
+}  // namespace avc::bench
