@@ -2,10 +2,11 @@
 # depends on the simulator. Checked at configure time over every target's link closure, so a
 # wrong dependency fails the build where it is written, not in review.
 #
-# avc_check_layers(FOLDERS <folder>... FORBIDDEN <regex>)
+# avc_check_layers([FOLDERS <folder>...] [TARGETS <target>...] FORBIDDEN <regex>)
 #   Fails configuration when a target defined under one of the folders (relative to the top
-#   source directory) links, directly or through other targets, a target whose name matches the
-#   regex. The message names the target, the forbidden one and the chain between them.
+#   source directory), or one of the targets named, links, directly or through other targets, a
+#   target whose name matches the regex. The message names the target, the forbidden one and
+#   the chain between them.
 
 function(_avc_layer_targets dir out)
   get_property(targets DIRECTORY ${dir} PROPERTY BUILDSYSTEM_TARGETS)
@@ -43,34 +44,37 @@ function(_avc_layer_links target out)
 endfunction()
 
 function(avc_check_layers)
-  cmake_parse_arguments(ARG "" "FORBIDDEN" "FOLDERS" ${ARGN})
+  cmake_parse_arguments(ARG "" "FORBIDDEN" "FOLDERS;TARGETS" ${ARGN})
+  set(checked ${ARG_TARGETS})
   foreach(folder IN LISTS ARG_FOLDERS)
-    if(NOT EXISTS ${PROJECT_SOURCE_DIR}/${folder})
-      continue()
+    if(EXISTS ${PROJECT_SOURCE_DIR}/${folder})
+      _avc_layer_targets(${PROJECT_SOURCE_DIR}/${folder} targets)
+      list(APPEND checked ${targets})
     endif()
-    _avc_layer_targets(${PROJECT_SOURCE_DIR}/${folder} targets)
-    foreach(target IN LISTS targets)
-      # Breadth-first over the link closure, remembering how each target was reached.
-      set(queue ${target})
-      set(seen ${target})
-      set(via_${target} "${target}")
-      while(queue)
-        list(POP_FRONT queue current)
-        _avc_layer_links(${current} links)
-        foreach(link IN LISTS links)
-          if(link IN_LIST seen)
-            continue()
-          endif()
-          list(APPEND seen ${link})
-          set(via_${link} "${via_${current}} -> ${link}")
-          if(link MATCHES "${ARG_FORBIDDEN}")
-            message(FATAL_ERROR
-              "Layer violation: ${target} (${folder}/) depends on ${link}, which production "
-              "code must not use (${via_${link}}). See README, Layout.")
-          endif()
-          list(APPEND queue ${link})
-        endforeach()
-      endwhile()
-    endforeach()
+  endforeach()
+  foreach(target IN LISTS checked)
+    # Breadth-first over the link closure, remembering how each target was reached.
+    set(queue ${target})
+    set(seen ${target})
+    set(via_${target} "${target}")
+    while(queue)
+      list(POP_FRONT queue current)
+      _avc_layer_links(${current} links)
+      foreach(link IN LISTS links)
+        if(link IN_LIST seen)
+          continue()
+        endif()
+        list(APPEND seen ${link})
+        set(via_${link} "${via_${current}} -> ${link}")
+        if(link MATCHES "${ARG_FORBIDDEN}")
+          get_target_property(where ${target} SOURCE_DIR)
+          file(RELATIVE_PATH where ${PROJECT_SOURCE_DIR} ${where})
+          message(FATAL_ERROR
+            "Layer violation: ${target} (${where}/) depends on ${link}, which it must not use "
+            "(${via_${link}}). See README, Layout.")
+        endif()
+        list(APPEND queue ${link})
+      endforeach()
+    endwhile()
   endforeach()
 endfunction()

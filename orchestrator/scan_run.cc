@@ -256,6 +256,7 @@ class ScanRun {
     plan::PlanAnswer answer;
     for (;;) {
       answer = Plan(request);
+      RecordPlannerSettingsInForce(answer.settings);
       EnterPlannerPhase(answer.phase);
       capture.SetPlantKeepOut(answer.keep_out);
       if (answer.final_plan) break;
@@ -274,9 +275,20 @@ class ScanRun {
     record_.options["planner_notes"] = final_plan.notes;
     record_.options["patches"] = final_plan.patches;
     record_.options["failing_patches"] = final_plan.failing_patches;
-    record_.options["planner_in_force"] = answer.settings;
     record_.options["stages"][stage::kPlanStage] = plan_jobs_;
     WriteKeptCameras();
+    Persist();
+  }
+
+  // The planner's settings in force join those the scan was given, so that a resume plans with
+  // exactly them where the caller left the planner's defaults (and a later AVC changed them).
+  void RecordPlannerSettingsInForce(const PlannerSettings& in_force) {
+    bool added = false;
+    for (const auto& [key, value] : in_force) {
+      added |= options_.planner_settings.emplace(key, value).second;
+    }
+    if (!added) return;
+    RecordPlannerSettings(options_.planner_settings, &record_.options);
     Persist();
   }
 
@@ -415,11 +427,19 @@ class ScanRun {
     report["build"] = nlohmann::json::parse(ReadFile(model_dir_ / "build.json"));
     report["traits"] = nlohmann::json::parse(ReadFile(model_dir_ / "traits.json"));
     report["surface"] = nlohmann::json::parse(ReadFile(model_dir_ / "surface.json"));
-    report["files"] = {"images/",          "cameras.json",       "colmap/",
-                       kCalibrationName,   "plan/",              "model/ppr.bt",
+    report["files"] = {"images/",
+                       "cameras.json",
+                       "colmap/",
+                       kCalibrationName,
+                       "plan/",
+                       "model/ppr.bt",
                        "model/points.ply",
-                       "model/merged.ply", "model/clusters.ply", "model/clusters.lcm",
-                       "model/mesh.ply",   "model/surface.json", "model/traits.csv",
+                       "model/merged.ply",
+                       "model/clusters.ply",
+                       "model/clusters.lcm",
+                       "model/mesh.ply",
+                       "model/surface.json",
+                       "model/traits.csv",
                        "model/traits.json"};
     WriteFileAtomically(dir_ / "report.json", report.dump(2) + "\n");
     WriteReportHtml(dir_);

@@ -24,7 +24,6 @@
 #include "drivers/client/cell_client.h"
 #include "orchestrator/scan_run.h"
 #include "services/calibrator/calibration_collector.h"
-#include "services/planner/cell_view.h"
 #include "sim/cell/cell_fixtures.h"
 #include "sim/scene/plant.h"
 #include "tools/avc/bus_flags.h"
@@ -47,7 +46,7 @@ struct DemoArgs {
   std::string calibration;
   bool recalibrate = false;
   double time_scale = 10;
-  planner::ActiveVisionOptions planner;  // the flags' settings
+  PlannerFlags planner;
   bus::BusFlags bus;
 };
 

@@ -39,8 +39,7 @@ struct ScanArgs {
   bool resume = false;
   bool states = false;
   bool jpeg = false;
-  planner::ActiveVisionOptions planner;          // the flags' settings
-  std::set<std::string> planner_settings_given;  // scan_planner_settings.h keys
+  PlannerFlags planner;
   double ready_timeout_s = 30;
   EnvelopeFlags envelope;
   AuthFlags auth;
@@ -72,7 +71,11 @@ int RunScanCommand(const ScanArgs& args) {
   options.scan_dir = dir;
   options.calibration_file = args.calibration;
   options.planner_settings = PlanJobSettings(args.planner, DriverEnvelopeOf(args.envelope));
-  options.planner_settings_given = args.planner_settings_given;
+  // Algorithm 1's counts the caller chose: a resume may not change them.
+  for (const char* key : {orchestrator::kMaxViewsSetting, orchestrator::kViewsPerLevelSetting,
+                          orchestrator::kPruneFaceLossSetting}) {
+    if (options.planner_settings.contains(key)) options.planner_settings_given.insert(key);
+  }
   if (args.jpeg) options.capture.encoding = avc::image_t::ENCODING_JPEG;
   options.ready_timeout =
       std::chrono::milliseconds(static_cast<int64_t>(args.ready_timeout_s * 1e3));
@@ -121,13 +124,7 @@ void RegisterScan(CLI::App& root, int* exit_code) {
   command->add_flag("--resume", args->resume, "continue the scan in DIR where it stopped");
   command->add_flag("--states", args->states,
                     "print the scan's states, the services each needs and where each may go");
-  const PlannerFlagOptions planner_flags = AddPlannerFlags(command, &args->planner);
-  CLI::Option* views_per_height =
-      command
-          ->add_option("--views-per-height", args->planner.views_per_level,
-                       "orbit views per height")
-          ->capture_default_str()
-          ->check(CLI::Range(3, 36));
+  AddPlannerFlags(command, &args->planner, /*views_per_height=*/true);
   AddEnvelopeFlags(command, &args->envelope);
   command->add_flag("--jpeg", args->jpeg, "keep the camera's JPEG (default: lossless PNG)");
   command
@@ -137,15 +134,7 @@ void RegisterScan(CLI::App& root, int* exit_code) {
       ->check(CLI::PositiveNumber);
   AddSenderKeyFlag(command, &args->auth);
   AddBusFlags(command, &args->bus);
-  SetGuardedRun(command, exit_code, [args, planner_flags, views_per_height] {
-    for (const auto& [option, key] :
-         {std::pair{planner_flags.max_views, orchestrator::kMaxViewsSetting},
-          std::pair{views_per_height, orchestrator::kViewsPerLevelSetting},
-          std::pair{planner_flags.prune_face_loss, orchestrator::kPruneFaceLossSetting}}) {
-      if (option->count() > 0) args->planner_settings_given.insert(key);
-    }
-    return RunScanCommand(*args);
-  });
+  SetGuardedRun(command, exit_code, [args] { return RunScanCommand(*args); });
 }
 
 }  // namespace avc::cli

@@ -2,31 +2,40 @@
 
 #include <fmt/format.h>
 
-#include "services/planner/plan_settings.h"
+#include "orchestrator/scan_planner_settings.h"
 
 namespace avc::cli {
 
-PlannerFlagOptions AddPlannerFlags(CLI::App* command, planner::ActiveVisionOptions* planner) {
-  PlannerFlagOptions options;
-  options.max_views =
-      command->add_option("--max-views", planner->max_views, "most images the planner captures")
-          ->capture_default_str()
-          ->check(CLI::Range(4, 200));
-  options.prune_face_loss =
-      command
-          ->add_option("--prune-face-loss", planner->prune_max_covered_faces_lost,
-                       "fraction of the plant proxy's well-seen faces that removing redundant "
-                       "views may leave under 3 views (1: the paper's rule alone; 0.01 with "
-                       "--max-views 50 keeps more views and coverage, see BENCHMARKS.md nbv)")
-          ->capture_default_str()
-          ->check(CLI::Range(0.0, 1.0));
-  return options;
+void AddPlannerFlags(CLI::App* command, PlannerFlags* flags, bool views_per_height) {
+  command
+      ->add_option("--max-views", flags->max_views,
+                   "most images the planner captures (default: the planner's, 40)")
+      ->check(CLI::Range(4, 200));
+  command
+      ->add_option("--prune-face-loss", flags->prune_face_loss,
+                   "fraction of the plant proxy's well-seen faces that removing redundant views "
+                   "may leave under 3 views (default: the planner's, 1: the paper's rule alone; "
+                   "0.01 with --max-views 50 keeps more views and coverage, see BENCHMARKS.md "
+                   "nbv)")
+      ->check(CLI::Range(0.0, 1.0));
+  if (views_per_height) {
+    command
+        ->add_option("--views-per-height", flags->views_per_height,
+                     "orbit views per height (default: the planner's, 10)")
+        ->check(CLI::Range(3, 36));
+  }
 }
 
 std::map<std::string, std::string> PlanJobSettings(
-    const planner::ActiveVisionOptions& planner,
-    const std::optional<kinematics::SafetyEnvelope>& driver) {
-  std::map<std::string, std::string> settings = planner::DescribePlanSettings({planner});
+    const PlannerFlags& flags, const std::optional<kinematics::SafetyEnvelope>& driver) {
+  std::map<std::string, std::string> settings;
+  if (flags.max_views) settings[orchestrator::kMaxViewsSetting] = std::to_string(*flags.max_views);
+  if (flags.prune_face_loss) {
+    settings[orchestrator::kPruneFaceLossSetting] = fmt::format("{}", *flags.prune_face_loss);
+  }
+  if (flags.views_per_height) {
+    settings[orchestrator::kViewsPerLevelSetting] = std::to_string(*flags.views_per_height);
+  }
   if (!driver) return settings;
   if (driver->table_z_base_m) settings["table_z"] = fmt::format("{}", *driver->table_z_base_m);
   settings["table_clearance"] = fmt::format("{}", driver->table_clearance_m);
