@@ -238,6 +238,12 @@ class ScanRun {
       WriteFileAtomically(kept, ReadFile(given));
     }
     calibration_ = calibration::LoadCalibration(kept);
+    if (!calibration_->turntable_calibrated) {
+      throw std::runtime_error(fmt::format(
+          "{} has no turntable axis (a hand-eye-only calibration): calibrate the cell with its "
+          "turntable shots (`avc calibrate`)",
+          kept.string()));
+    }
   }
 
   // Algorithm 1 as plan jobs for avc-planner: each answer names the next view, which is

@@ -99,16 +99,20 @@ int RunSolve(const CalibrateArgs& args) {
       "calibration written to {}\n"
       "  intrinsics: fx {:.2f} fy {:.2f} cx {:.2f} cy {:.2f}, RMS {:.3f} px\n"
       "  hand-eye: {} poses, reprojection RMS {:.3f} px (closed form {:.3f}), pose residual "
-      "{:.4f} deg / {:.3f} mm (median)\n"
-      "  turntable: {} angles, axis ({:.5f} {:.5f} {:.5f}) through ({:.4f} {:.4f} {:.4f}) m in "
-      "the base frame, RMS {:.3f} mm\n",
+      "{:.4f} deg / {:.3f} mm (median)\n",
       output.string(), result.intrinsics.fx, result.intrinsics.fy, result.intrinsics.cx,
       result.intrinsics.cy, r.intrinsics_rms_px, details.hand_eye_views, r.hand_eye_rms_px,
-      details.closed_form_rms_px, r.hand_eye_rotation_deg, r.hand_eye_translation_mm,
-      details.turntable_views, details.turntable_axis_base.axis.x(),
-      details.turntable_axis_base.axis.y(), details.turntable_axis_base.axis.z(),
-      details.turntable_axis_base.centre.x(), details.turntable_axis_base.centre.y(),
-      details.turntable_axis_base.centre.z(), r.turntable_centre_rms_mm);
+      details.closed_form_rms_px, r.hand_eye_rotation_deg, r.hand_eye_translation_mm);
+  const calibration::TurntableAxis& axis = details.turntable_axis_base;
+  std::cout << (result.turntable_calibrated
+                    ? fmt::format("  turntable: {} angles, axis ({:.5f} {:.5f} {:.5f}) through "
+                                  "({:.4f} {:.4f} {:.4f}) m in the base frame, RMS {:.3f} mm\n",
+                                  details.turntable_views, axis.axis.x(), axis.axis.y(),
+                                  axis.axis.z(), axis.centre.x(), axis.centre.y(), axis.centre.z(),
+                                  r.turntable_centre_rms_mm)
+                    : std::string("  turntable: not calibrated (no turntable shots); "
+                                  "T_base_table is the board in the base frame, and a scan "
+                                  "refuses this calibration\n"));
   for (const std::string& why : r.rejected) std::cout << "  left out: " << why << "\n";
   for (const std::string& warning : details.warnings) std::cout << "  warning: " << warning << "\n";
   return 0;

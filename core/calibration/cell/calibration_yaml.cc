@@ -121,6 +121,10 @@ std::string CalibrationToYaml(const CellCalibration& calibration) {
   EmitVector(out, "distortion", k.distortion);
   out << YAML::EndMap;
   EmitMatrix(out, "T_flange_cam", calibration.T_flange_cam);
+  out << YAML::Key << "turntable_calibrated" << YAML::Value << calibration.turntable_calibrated;
+  if (!calibration.turntable_calibrated) {
+    out << YAML::Comment("no turntable shots: T_base_table is the board in the base frame");
+  }
   EmitMatrix(out, "T_base_table", calibration.T_base_table);
   EmitMatrix(out, "T_table_board", calibration.T_table_board);
   out << YAML::Key << "kinematics" << YAML::Value << YAML::BeginMap;
@@ -182,6 +186,12 @@ CellCalibration CalibrationFromYaml(const std::string& text, const std::string& 
   const std::vector<double> distortion = read.Numbers(camera, "distortion", 5);
   std::copy(distortion.begin(), distortion.end(), k.distortion.begin());
   calibration.T_flange_cam = read.Pose(doc, "T_flange_cam");
+  // Absent in files from before partial calibrations, which always had the turntable.
+  if (const YAML::Node turntable = doc["turntable_calibrated"]) {
+    if (!YAML::convert<bool>::decode(turntable, calibration.turntable_calibrated)) {
+      read.Fail(turntable, "turntable_calibrated must be true or false");
+    }
+  }
   calibration.T_base_table = read.Pose(doc, "T_base_table");
   calibration.T_table_board = read.Pose(doc, "T_table_board");
   const YAML::Node kinematics = read.Child(doc, "kinematics");

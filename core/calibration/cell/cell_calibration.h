@@ -41,6 +41,9 @@ struct CellCalibration {
 
   camera::Intrinsics intrinsics;
   Eigen::Isometry3d T_flange_cam = Eigen::Isometry3d::Identity();
+  // False for a hand-eye-only calibration (no turntable shots): then T_base_table is the board's
+  // pose in the base frame (robot-world), which no turntable angle moves, and a scan refuses it.
+  bool turntable_calibrated = true;
   Eigen::Isometry3d T_base_table = Eigen::Isometry3d::Identity();
   // Where the calibration board lay at angle 0, in the table (= world) frame: relates this
   // calibration's world frame to the board, e.g. to compare with a simulator's truth.

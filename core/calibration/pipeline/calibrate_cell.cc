@@ -122,19 +122,29 @@ CellCalibration CalibrateCell(const CalibrationDataset& dataset, const Calibrate
         {d.shot->table_angle, d.shot->T_base_flange * calibration.T_flange_cam * d.T_cam_board});
   }
   details.turntable_views = static_cast<int>(table_views.size());
-  report(fmt::format("turntable axis from {} angles", table_views.size()));
-  const TurntableFit fit = FitTurntableAxis(table_views, options.turntable);
-  details.turntable_axis_base = fit.axis;
-  residuals.turntable_centre_rms_mm = fit.rms_position * 1000;
-  residuals.turntable_angles = static_cast<int>(table_views.size());
-  calibration.T_base_table = TableFrame(fit.axis, fit.T_fixed_board0.translation());
-  calibration.T_table_board = calibration.T_base_table.inverse() * fit.T_fixed_board0;
+  if (table_views.empty()) {
+    // A hand-eye-only dataset (a robot without our turntable, say): intrinsics, hand-eye and
+    // robot-world; the board's pose stands where the table frame would be.
+    report("no turntable shots: the turntable is not calibrated");
+    calibration.turntable_calibrated = false;
+    calibration.T_base_table = refined.T_board_base.inverse();
+    calibration.T_table_board = Eigen::Isometry3d::Identity();
+  } else {
+    report(fmt::format("turntable axis from {} angles", table_views.size()));
+    const TurntableFit fit = FitTurntableAxis(table_views, options.turntable);
+    details.turntable_axis_base = fit.axis;
+    residuals.turntable_centre_rms_mm = fit.rms_position * 1000;
+    residuals.turntable_angles = static_cast<int>(table_views.size());
+    calibration.T_base_table = TableFrame(fit.axis, fit.T_fixed_board0.translation());
+    calibration.T_table_board = calibration.T_base_table.inverse() * fit.T_fixed_board0;
+  }
 
   calibration.dh = options.dh;
   calibration.note = fmt::format(
-      "{} images, {} used: {} hand-eye poses, {} table angles; board {}x{} {} mm",
+      "{} images, {} used: {} hand-eye poses, {} table angles{}; board {}x{} {} mm",
       dataset.shots.size(), kept.size(), details.hand_eye_views, details.turntable_views,
-      dataset.board.cols, dataset.board.rows, dataset.board.square_size * 1000);
+      calibration.turntable_calibrated ? "" : " (turntable not calibrated)", dataset.board.cols,
+      dataset.board.rows, dataset.board.square_size * 1000);
   if (const std::string problem = calibration.Validate(); !problem.empty()) {
     throw std::runtime_error("calibration refused: " + problem);
   }

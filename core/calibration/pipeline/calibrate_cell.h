@@ -4,6 +4,8 @@
 // image, intrinsics from all views, robot-world/hand-eye from the hand-eye shots (closed form,
 // then refined on the reprojection of every corner), the turntable axis from the turntable
 // shots (board poses carried into the base frame through the hand-eye), and the table frame.
+// A dataset with no turntable shots gives a hand-eye-only calibration (turntable_calibrated
+// false).
 // Views that fail (board not found, unreadable, outliers) are left out and listed; a dataset
 // that cannot determine the calibration is refused with the reason, never solved wrongly.
 

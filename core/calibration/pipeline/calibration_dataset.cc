@@ -52,30 +52,43 @@ CalibrationDataset LoadCalibrationDataset(const std::filesystem::path& folder) {
   if (!doc.contains("shots") || !doc["shots"].is_array()) fail("no \"shots\" list");
   for (size_t i = 0; i < doc["shots"].size(); ++i) {
     const nlohmann::json& entry = doc["shots"][i];
+    if (!entry.is_object()) fail(fmt::format("shot {} is not an object", i));
+    const bool named = entry.contains("image") && entry["image"].is_string();
+    const std::string name = named
+                                 ? fmt::format("shot {} ({})", i, entry["image"].get<std::string>())
+                                 : fmt::format("shot {}", i);
+    // Each missing or mistyped field is named with its shot.
+    const auto field = [&](const char* key) -> const nlohmann::json& {
+      if (!entry.contains(key)) fail(fmt::format("{}: no \"{}\"", name, key));
+      return entry[key];
+    };
     CalibrationShot shot;
-    try {
-      shot.image = entry.at("image").get<std::string>();
-      const std::string purpose = entry.at("purpose").get<std::string>();
-      if (purpose != "hand_eye" && purpose != "turntable") {
-        fail(fmt::format("shot {}: unknown purpose '{}' (hand_eye or turntable)", i, purpose));
+    if (!field("image").is_string() || field("image").get<std::string>().empty()) {
+      fail(name + ": \"image\" must be the image's file name");
+    }
+    shot.image = entry["image"].get<std::string>();
+    const nlohmann::json& purpose = field("purpose");
+    if (purpose != "hand_eye" && purpose != "turntable") {
+      fail(fmt::format("shot {}: unknown purpose {} (hand_eye or turntable)", i, purpose.dump()));
+    }
+    shot.purpose = purpose == "hand_eye" ? ShotPurpose::kHandEye : ShotPurpose::kTurntable;
+    // A hand-eye shot's table angle means nothing (the board lies still): optional there.
+    if (shot.purpose == ShotPurpose::kTurntable || entry.contains("table_angle")) {
+      const nlohmann::json& angle = field("table_angle");
+      // JSON has no NaN: a non-finite angle was written as null.
+      if (!angle.is_number()) fail(name + ": \"table_angle\" must be a finite number (radians)");
+      shot.table_angle = angle.get<double>();
+    }
+    // JSON has no NaN: a non-finite pose was written as null.
+    const nlohmann::json& pose = field("T_base_flange");
+    const bool numbers =
+        pose.is_array() && pose.size() == 16 &&
+        std::all_of(pose.begin(), pose.end(), [](const auto& v) { return v.is_number(); });
+    if (!numbers) fail(name + ": T_base_flange must be 16 finite numbers");
+    for (int r = 0; r < 4; ++r) {
+      for (int c = 0; c < 4; ++c) {
+        shot.T_base_flange.matrix()(r, c) = pose[static_cast<size_t>(4 * r + c)].get<double>();
       }
-      shot.purpose = purpose == "hand_eye" ? ShotPurpose::kHandEye : ShotPurpose::kTurntable;
-      shot.table_angle = entry.at("table_angle").get<double>();
-      // JSON has no NaN: a non-finite pose was written as null.
-      const nlohmann::json& pose = entry.at("T_base_flange");
-      const bool numbers =
-          pose.is_array() && pose.size() == 16 &&
-          std::all_of(pose.begin(), pose.end(), [](const auto& v) { return v.is_number(); });
-      if (!numbers) {
-        fail(fmt::format("shot {} ({}): T_base_flange must be 16 finite numbers", i, shot.image));
-      }
-      for (int r = 0; r < 4; ++r) {
-        for (int c = 0; c < 4; ++c) {
-          shot.T_base_flange.matrix()(r, c) = pose[static_cast<size_t>(4 * r + c)].get<double>();
-        }
-      }
-    } catch (const nlohmann::json::exception& error) {
-      fail(fmt::format("shot {}: {}", i, error.what()));
     }
     if (!std::isfinite(shot.table_angle)) {
       fail(fmt::format("shot {} ({}): table angle is not finite", i, shot.image));

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <chrono>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <opencv2/imgcodecs.hpp>
 
@@ -153,9 +154,8 @@ TEST(CalibrateCell, TheDocumentedCommandLineSolvesADataset) {
       << testing::ReadFile(dir / "solve.log");
   const CellCalibration solved = LoadCalibration(folder / "calibration.yaml");
   EXPECT_NEAR(solved.intrinsics.fx, rendered.truth.intrinsics.fx, 1.5);
-  EXPECT_LT(
-      (solved.T_flange_cam.translation() - rendered.truth.T_flange_cam.translation()).norm(),
-      0.5e-3);
+  EXPECT_LT((solved.T_flange_cam.translation() - rendered.truth.T_flange_cam.translation()).norm(),
+            0.5e-3);
 
   fs::create_directories(dir / "empty");
   EXPECT_EQ(run({"solve", (dir / "empty").string()}, dir / "empty.log"), 1);
@@ -165,6 +165,83 @@ TEST(CalibrateCell, TheDocumentedCommandLineSolvesADataset) {
   EXPECT_NE(testing::ReadFile(dir / "nothing.log").find("give the dataset FOLDER"),
             std::string::npos)
       << testing::ReadFile(dir / "nothing.log");
+}
+
+// A robot without our turntable: hand-eye shots alone (one written without a table angle, which
+// means nothing there) solve intrinsics, hand-eye and robot-world, and the calibration says the
+// turntable is not calibrated, in memory and in calibration.yaml.
+TEST(CalibrateCell, HandEyeShotsAloneGiveAHandEyeOnlyCalibration) {
+  testing::TempDir dir("avc-calibrate-hand-eye");
+  RenderedDataset rendered = Render(dir.path());
+  std::erase_if(rendered.dataset.shots, [](const CalibrationShot& shot) {
+    return shot.purpose == ShotPurpose::kTurntable;
+  });
+  SaveCalibrationDataset(rendered.dataset);
+  nlohmann::json doc = nlohmann::json::parse(testing::ReadFile(dir / "dataset.json"));
+  doc["shots"][0].erase("table_angle");
+  testing::WriteFile(dir / "dataset.json", doc.dump());
+  const CalibrationDataset dataset = LoadCalibrationDataset(dir.path());
+  ASSERT_EQ(dataset.shots.size(), 12u);
+
+  CalibrateOptions options;
+  options.dh = rendered.truth.dh;
+  CalibrationDetails details;
+  const CellCalibration calibration = CalibrateCell(dataset, options, &details);
+  EXPECT_FALSE(calibration.turntable_calibrated);
+  EXPECT_EQ(details.turntable_views, 0);
+  EXPECT_NE(calibration.note.find("turntable not calibrated"), std::string::npos);
+  EXPECT_LT(
+      (calibration.T_flange_cam.translation() - rendered.truth.T_flange_cam.translation()).norm(),
+      0.5e-3);
+  // The board's pose in the base frame (robot-world) stands where the table frame would be.
+  const Eigen::Isometry3d T_base_board = rendered.truth.T_base_table * rendered.board.T_world_board;
+  EXPECT_LT((calibration.T_base_table.translation() - T_base_board.translation()).norm(), 1e-3);
+
+  SaveCalibration(calibration, dir / "calibration.yaml");
+  EXPECT_NE(testing::ReadFile(dir / "calibration.yaml").find("turntable_calibrated: false"),
+            std::string::npos);
+  EXPECT_FALSE(LoadCalibration(dir / "calibration.yaml").turntable_calibrated);
+}
+
+TEST(CalibrationDataset, MissingFieldsAreNamedWithTheirShot) {
+  testing::TempDir dir("avc-calibration-fields");
+  const auto error_of = [&](const std::string& shot) {
+    testing::WriteFile(dir / "dataset.json",
+                       R"({"format": "avc-calibration-dataset", "version": 1, "board": )"
+                       R"({"cols": 9, "rows": 6, "square": 0.025}, "shots": [)" +
+                           shot + "]}");
+    try {
+      LoadCalibrationDataset(dir.path());
+    } catch (const std::runtime_error& error) {
+      return std::string(error.what());
+    }
+    return std::string("no error");
+  };
+  const std::string pose = "[1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]";
+  EXPECT_NE(
+      error_of(R"({"image": "tt_0.png", "purpose": "turntable", "T_base_flange": )" + pose + "}")
+          .find(R"(shot 0 (tt_0.png): no "table_angle")"),
+      std::string::npos)
+      << "a turntable shot needs its angle";
+  EXPECT_NE(error_of(R"({"image": "he_0.png", "purpose": "hand_eye"})")
+                .find(R"(shot 0 (he_0.png): no "T_base_flange")"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"purpose": "hand_eye", "T_base_flange": )" + pose + "}")
+                .find(R"(shot 0: no "image")"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"image": "he_0.png", "purpose": "wobble", "T_base_flange": )" + pose + "}")
+                .find(R"(unknown purpose "wobble")"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"image": "he_0.png", "purpose": "hand_eye", "table_angle": null, )"
+                     R"("T_base_flange": )" +
+                     pose + "}")
+                .find(R"("table_angle" must be a finite number)"),
+            std::string::npos);
+  // A hand-eye shot without an angle passes the fields (the missing image is the next problem).
+  EXPECT_NE(
+      error_of(R"({"image": "he_0.png", "purpose": "hand_eye", "T_base_flange": )" + pose + "}")
+          .find("does not exist"),
+      std::string::npos);
 }
 
 TEST(CalibrationDataset, RefusesBadDatasetsNamingTheShot) {
