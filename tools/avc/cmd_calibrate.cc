@@ -14,6 +14,7 @@
 #include "core/calibration/cell/calibration_yaml.h"
 #include "core/calibration/pipeline/calibrate_cell.h"
 #include "core/calibration/pipeline/calibration_dataset.h"
+#include "core/calibration/pipeline/intrinsics_file.h"
 #include "drivers/client/cell_client.h"
 #include "services/calibrator/calibration_collector.h"
 #include "tools/avc/auth_flags.h"
@@ -36,7 +37,8 @@ struct CalibrateArgs {
   EnvelopeFlags envelope;  // the poses' moves are planned inside it
   // Where the turntable's top centre roughly is in the robot base frame (metres), for planning.
   std::vector<double> table_in_base;
-  std::string output;  // calibration.yaml; default <folder>/calibration.yaml
+  std::string output;      // calibration.yaml; default <folder>/calibration.yaml
+  std::string intrinsics;  // known intrinsics to use instead of estimating them
   AuthFlags auth;
   bus::BusFlags bus;
 };
@@ -88,8 +90,12 @@ int RunCollect(const CalibrateArgs& args) {
 int RunSolve(const CalibrateArgs& args) {
   const calibration::CalibrationDataset dataset = calibration::LoadCalibrationDataset(args.folder);
   calibration::CalibrationDetails details;
+  calibration::CalibrateOptions options;
+  if (!args.intrinsics.empty()) {
+    options.intrinsics.known = calibration::ReadIntrinsicsFile(args.intrinsics);
+  }
   const calibration::CellCalibration result =
-      calibration::CalibrateCell(dataset, calibration::CalibrateOptions{}, &details, Progress);
+      calibration::CalibrateCell(dataset, options, &details, Progress);
   const fs::path output =
       args.output.empty() ? fs::path(args.folder) / "calibration.yaml" : fs::path(args.output);
   calibration::SaveCalibration(result, output);
@@ -179,6 +185,12 @@ void RegisterCalibrate(CLI::App& root, int* exit_code) {
       ->check(CLI::ExistingDirectory);
   solve->add_option("-o,--output", solve_args->output,
                     "calibration file (default: FOLDER/calibration.yaml)");
+  solve
+      ->add_option("--intrinsics", solve_args->intrinsics,
+                   "use these camera intrinsics instead of estimating them: a calibration.yaml, "
+                   "or an OpenCV file (YAML/XML) with camera_matrix and "
+                   "distortion_coefficients (k1 k2 p1 p2 k3)")
+      ->check(CLI::ExistingFile);
   SetGuardedRun(solve, exit_code, [solve_args] { return RunSolve(*solve_args); });
 }
 

@@ -77,6 +77,40 @@ CalibrationRun Calibrate(const std::vector<const BoardDetection*>& views, const 
   return run;
 }
 
+// The board poses with `known` intrinsics: solvePnP per view, the RMS from reprojection.
+CalibrationRun PosesWithKnownIntrinsics(const std::vector<const BoardDetection*>& views,
+                                        const Chessboard& board, const camera::Intrinsics& known) {
+  const std::vector<cv::Point3f> board_points = board.CornerPoints();
+  const cv::Matx33d K(known.fx, 0, known.cx, 0, known.fy, known.cy, 0, 0, 1);
+  const std::vector<double> dist(known.distortion.begin(), known.distortion.end());
+  CalibrationRun run;
+  run.intrinsics = known;
+  double squared = 0;
+  size_t corners = 0;
+  for (const BoardDetection* view : views) {
+    cv::Mat rvec, tvec;
+    if (!cv::solvePnP(board_points, view->corners, K, dist, rvec, tvec, false,
+                      cv::SOLVEPNP_ITERATIVE)) {
+      throw std::runtime_error(fmt::format(
+          "intrinsics calibration: no board pose for view '{}' with the given intrinsics",
+          view->name));
+    }
+    std::vector<cv::Point2f> projected;
+    cv::projectPoints(board_points, rvec, tvec, K, dist, projected);
+    double view_squared = 0;
+    for (size_t i = 0; i < projected.size(); ++i) {
+      const cv::Point2f d = projected[i] - view->corners[i];
+      view_squared += d.dot(d);
+    }
+    run.view_rms.push_back(std::sqrt(view_squared / static_cast<double>(projected.size())));
+    run.poses.push_back(PoseFromRvecTvec(rvec, tvec));
+    squared += view_squared;
+    corners += projected.size();
+  }
+  run.rms_px = std::sqrt(squared / static_cast<double>(corners));
+  return run;
+}
+
 double Median(std::vector<double> values) {
   std::sort(values.begin(), values.end());
   const size_t n = values.size();
@@ -98,6 +132,22 @@ IntrinsicsCalibration CalibrateIntrinsics(const std::vector<BoardDetection>& vie
                                           const Chessboard& board,
                                           const IntrinsicsOptions& options) {
   CheckViews(views, board);
+  IntrinsicsOptions given = options;
+  if (given.known) {
+    const cv::Size size = views.front().image_size;
+    if (given.known->width == 0 && given.known->height == 0) {  // a file that did not say
+      given.known->width = size.width;
+      given.known->height = size.height;
+    }
+    if (const std::string problem = given.known->Validate(); !problem.empty()) {
+      throw std::invalid_argument("intrinsics calibration: the given intrinsics: " + problem);
+    }
+    if (given.known->width != size.width || given.known->height != size.height) {
+      throw std::invalid_argument(fmt::format(
+          "intrinsics calibration: the given intrinsics are for {}x{} images, the views are {}x{}",
+          given.known->width, given.known->height, size.width, size.height));
+    }
+  }
   const int min_views = std::max(options.min_views, 3);
   if (static_cast<int>(views.size()) < min_views)
     throw std::runtime_error(fmt::format(
@@ -113,7 +163,8 @@ IntrinsicsCalibration CalibrateIntrinsics(const std::vector<BoardDetection>& vie
   while (true) {
     std::vector<const BoardDetection*> kept_views;
     for (size_t i : kept) kept_views.push_back(&views[i]);
-    run = Calibrate(kept_views, board);
+    run = given.known ? PosesWithKnownIntrinsics(kept_views, board, *given.known)
+                      : Calibrate(kept_views, board);
     const double median = Median(run.view_rms);
     const auto worst = std::max_element(run.view_rms.begin(), run.view_rms.end());
     const double limit = std::max(options.outlier_factor * median, options.outlier_floor_px);
@@ -139,7 +190,7 @@ IntrinsicsCalibration CalibrateIntrinsics(const std::vector<BoardDetection>& vie
   result.report.rms_px = run.rms_px;
   result.report.coverage = CornerCoverage(kept_views, views.front().image_size,
                                           options.coverage_grid_cols, options.coverage_grid_rows);
-  if (result.report.coverage < options.min_coverage)
+  if (result.report.coverage < options.min_coverage && !given.known)
     throw std::runtime_error(fmt::format(
         "intrinsics calibration: corners cover only {:.0f}% of a {}x{} image grid (at least "
         "{:.0f}% needed): add views with the board near the image edges and corners",

@@ -3,11 +3,17 @@
 // Camera intrinsics (fx fy cx cy, k1 k2 p1 p2 k3) from chessboard views with cv::calibrateCamera,
 // rejecting views that do not fit and refusing sets that cannot constrain the model.
 //
+// Known intrinsics (IntrinsicsOptions::known, e.g. the maker's or an earlier calibration from
+// many views) are kept as they are: each view's board pose is then solved with them alone
+// (cv::solvePnP), and the same rejection rule and report apply. Few views of one board cannot
+// constrain five distortion terms; known intrinsics avoid fitting them.
+//
 // View rejection rule: calibrate, take the per-view reprojection RMS; while the worst view's RMS
 // exceeds both `outlier_factor` x the median view RMS and `outlier_floor_px`, drop that one view
 // and recalibrate (one at a time, since a single bad view inflates every other view's RMS).
 
 #include <Eigen/Geometry>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +31,9 @@ struct IntrinsicsOptions {
   int coverage_grid_rows = 6;
   double min_coverage = 0.4;       // refuse below this fraction of grid cells with corners
   double advised_coverage = 0.75;  // warn below this fraction
+  // Set: these intrinsics are used, not estimated (the coverage then only warns). Their size
+  // must be the images'.
+  std::optional<camera::Intrinsics> known;
 };
 
 struct ViewReport {

@@ -15,9 +15,11 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <opencv2/core/persistence.hpp>
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/calibration/cell/calibration_yaml.h"
+#include "core/calibration/pipeline/intrinsics_file.h"
 #include "core/kinematics/forward_kinematics.h"
 #include "core/launch/child_process.h"
 #include "services/calibrator/calibration_plan.h"
@@ -201,6 +203,59 @@ TEST(CalibrateCell, HandEyeShotsAloneGiveAHandEyeOnlyCalibration) {
   EXPECT_NE(testing::ReadFile(dir / "calibration.yaml").find("turntable_calibrated: false"),
             std::string::npos);
   EXPECT_FALSE(LoadCalibration(dir / "calibration.yaml").turntable_calibrated);
+}
+
+// Known intrinsics (here the truth, from an OpenCV file without the image size) are kept as
+// they are, and the hand-eye is solved with them; through the CLI's --intrinsics too.
+TEST(CalibrateCell, KnownIntrinsicsAreKeptAndUsed) {
+  testing::TempDir dir("avc-calibrate-known");
+  const RenderedDataset rendered = Render(dir / "dataset");
+  const camera::Intrinsics& truth = rendered.truth.intrinsics;
+  {
+    cv::FileStorage file((dir / "camera.yaml").string(), cv::FileStorage::WRITE);
+    file << "camera_matrix"
+         << cv::Mat(cv::Matx33d(truth.fx, 0, truth.cx, 0, truth.fy, truth.cy, 0, 0, 1));
+    file << "distortion_coefficients"
+         << cv::Mat(std::vector<double>(truth.distortion.begin(), truth.distortion.end()));
+  }
+  CalibrateOptions options;
+  options.dh = rendered.truth.dh;
+  options.intrinsics.known = ReadIntrinsicsFile(dir / "camera.yaml");
+  EXPECT_EQ(options.intrinsics.known->width, 0) << "the file gives no size";
+  const CellCalibration calibration =
+      CalibrateCell(LoadCalibrationDataset(dir / "dataset"), options);
+  EXPECT_EQ(calibration.intrinsics.fx, truth.fx);
+  EXPECT_EQ(calibration.intrinsics.distortion, truth.distortion);
+  EXPECT_EQ(calibration.intrinsics.width, truth.width);
+  EXPECT_LT(
+      (calibration.T_flange_cam.translation() - rendered.truth.T_flange_cam.translation()).norm(),
+      0.5e-3);
+  EXPECT_LT(calibration.residuals.hand_eye_rms_px, 0.3);
+
+  // Another camera's size is refused, naming both.
+  camera::Intrinsics other = truth;
+  other.width *= 2;
+  options.intrinsics.known = other;
+  try {
+    CalibrateCell(LoadCalibrationDataset(dir / "dataset"), options);
+    ADD_FAILURE() << "intrinsics of another image size must be refused";
+  } catch (const std::exception& error) {
+    EXPECT_NE(std::string(error.what()).find("the given intrinsics are for"), std::string::npos)
+        << error.what();
+  }
+
+  // The CLI: our own calibration.yaml as the intrinsics file.
+  SaveCalibration(calibration, dir / "known.yaml");
+  launch::ChildProcess solve = launch::ChildProcess::Spawn(
+      {{testing::Executable("avc").string(), "calibrate", "solve", (dir / "dataset").string(),
+        "--intrinsics", (dir / "known.yaml").string(), "-o", (dir / "solved.yaml").string()},
+       {},
+       "",
+       (dir / "solve.log").string()});
+  const std::optional<int> status = solve.WaitFor(std::chrono::milliseconds(60000));
+  ASSERT_TRUE(status && WIFEXITED(*status) && WEXITSTATUS(*status) == 0)
+      << testing::ReadFile(dir / "solve.log");
+  EXPECT_EQ(LoadCalibration(dir / "solved.yaml").intrinsics.fx, truth.fx);
 }
 
 TEST(CalibrationDataset, MissingFieldsAreNamedWithTheirShot) {
