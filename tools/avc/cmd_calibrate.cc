@@ -37,8 +37,9 @@ struct CalibrateArgs {
   EnvelopeFlags envelope;  // the poses' moves are planned inside it
   // Where the turntable's top centre roughly is in the robot base frame (metres), for planning.
   std::vector<double> table_in_base;
-  std::string output;      // calibration.yaml; default <folder>/calibration.yaml
-  std::string intrinsics;  // known intrinsics to use instead of estimating them
+  std::string output;              // calibration.yaml; default <folder>/calibration.yaml
+  std::string intrinsics;          // known intrinsics to use instead of estimating them
+  bool choose_distortion = false;  // the distortion model by held-out views
   AuthFlags auth;
   bus::BusFlags bus;
 };
@@ -94,6 +95,7 @@ int RunSolve(const CalibrateArgs& args) {
   if (!args.intrinsics.empty()) {
     options.intrinsics.known = calibration::ReadIntrinsicsFile(args.intrinsics);
   }
+  options.intrinsics.choose_distortion_model = args.choose_distortion;
   const calibration::CellCalibration result =
       calibration::CalibrateCell(dataset, options, &details, Progress);
   const fs::path output =
@@ -119,6 +121,9 @@ int RunSolve(const CalibrateArgs& args) {
                     : std::string("  turntable: not calibrated (no turntable shots); "
                                   "T_base_table is the board in the base frame, and a scan "
                                   "refuses this calibration\n"));
+  std::cout << fmt::format(
+      "  distortion model: {}{}\n", details.distortion_model,
+      details.distortion_model_reason.empty() ? "" : " (" + details.distortion_model_reason + ")");
   for (const std::string& why : r.rejected) std::cout << "  left out: " << why << "\n";
   for (const std::string& warning : details.warnings) std::cout << "  warning: " << warning << "\n";
   return 0;
@@ -191,6 +196,10 @@ void RegisterCalibrate(CLI::App& root, int* exit_code) {
                    "or an OpenCV file (YAML/XML) with camera_matrix and "
                    "distortion_coefficients (k1 k2 p1 p2 k3)")
       ->check(CLI::ExistingFile);
+  solve->add_flag("--choose-distortion", solve_args->choose_distortion,
+                  "choose the distortion terms (k1; k1 k2; k1 k2 p1 p2; k1 k2 p1 p2 k3) by the "
+                  "reprojection of views held out of each fit, for few views of one board "
+                  "(default: all five)");
   SetGuardedRun(solve, exit_code, [solve_args] { return RunSolve(*solve_args); });
 }
 

@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <opencv2/calib3d.hpp>
 #include <stdexcept>
+#include <utility>
 
 #include "core/calibration/board/board_pose.h"
 #include "core/calibration/board/corner_coverage.h"
@@ -46,7 +48,20 @@ void CheckViews(const std::vector<BoardDetection>& views, const Chessboard& boar
   }
 }
 
-CalibrationRun Calibrate(const std::vector<const BoardDetection*>& views, const Chessboard& board) {
+struct DistortionModel {
+  const char* terms;
+  int flags;  // cv::calibrateCamera's: the terms left out are held at 0
+};
+// Simplest first.
+constexpr DistortionModel kDistortionModels[] = {
+    {"k1", cv::CALIB_FIX_K2 | cv::CALIB_FIX_K3 | cv::CALIB_ZERO_TANGENT_DIST},
+    {"k1 k2", cv::CALIB_FIX_K3 | cv::CALIB_ZERO_TANGENT_DIST},
+    {"k1 k2 p1 p2", cv::CALIB_FIX_K3},
+    {"k1 k2 p1 p2 k3", 0}};
+constexpr int kFullModel = 3;
+
+CalibrationRun Calibrate(const std::vector<const BoardDetection*>& views, const Chessboard& board,
+                         int flags = kDistortionModels[kFullModel].flags) {
   const std::vector<cv::Point3f> board_points = board.CornerPoints();
   std::vector<std::vector<cv::Point3f>> object_points(views.size(), board_points);
   std::vector<std::vector<cv::Point2f>> image_points;
@@ -58,7 +73,8 @@ CalibrationRun Calibrate(const std::vector<const BoardDetection*>& views, const 
   CalibrationRun run;
   run.rms_px = cv::calibrateCamera(
       object_points, image_points, size, K, dist, rvecs, tvecs, std_intrinsics, std_extrinsics,
-      per_view, 0, cv::TermCriteria(cv::TermCriteria::COUNT + cv::TermCriteria::EPS, 200, 1e-12));
+      per_view, flags,
+      cv::TermCriteria(cv::TermCriteria::COUNT + cv::TermCriteria::EPS, 200, 1e-12));
   camera::Intrinsics& in = run.intrinsics;
   in.width = size.width;
   in.height = size.height;
@@ -115,6 +131,53 @@ double Median(std::vector<double> values) {
   std::sort(values.begin(), values.end());
   const size_t n = values.size();
   return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+// The median reprojection RMS of views held out of the model's fit (view i in fold i % folds),
+// each posed with the intrinsics fitted to the other folds.
+double HeldOutRms(const std::vector<const BoardDetection*>& views, const Chessboard& board,
+                  const DistortionModel& model, int folds) {
+  std::vector<double> rms;
+  for (int fold = 0; fold < folds; ++fold) {
+    std::vector<const BoardDetection*> fit, held;
+    for (size_t i = 0; i < views.size(); ++i) {
+      (static_cast<int>(i % static_cast<size_t>(folds)) == fold ? held : fit).push_back(views[i]);
+    }
+    if (held.empty()) continue;
+    try {
+      const CalibrationRun fitted = Calibrate(fit, board, model.flags);
+      const CalibrationRun posed = PosesWithKnownIntrinsics(held, board, fitted.intrinsics);
+      rms.insert(rms.end(), posed.view_rms.begin(), posed.view_rms.end());
+    } catch (const std::runtime_error&) {  // a model the fold cannot fit predicts nothing
+      rms.insert(rms.end(), held.size(), std::numeric_limits<double>::infinity());
+    }
+  }
+  return Median(rms);
+}
+
+// The simplest model whose held-out RMS is within options.model_tolerance of the best's, and why.
+std::pair<const DistortionModel*, std::string> ChooseDistortionModel(
+    const std::vector<const BoardDetection*>& views, const Chessboard& board,
+    const IntrinsicsOptions& options) {
+  // Each fold must leave enough views to fit the full model.
+  const int folds = std::min(options.model_folds, static_cast<int>(views.size()) / 2);
+  if (folds < 2) {
+    return {&kDistortionModels[1],
+            fmt::format("{} views are too few to compare models: k1 k2", views.size())};
+  }
+  std::vector<double> scores;
+  for (const DistortionModel& model : kDistortionModels) {
+    scores.push_back(HeldOutRms(views, board, model, folds));
+  }
+  const double best = *std::min_element(scores.begin(), scores.end());
+  size_t chosen = 0;
+  while (scores[chosen] > best * (1 + options.model_tolerance)) ++chosen;
+  std::string reason = fmt::format("held-out RMS over {} folds:", folds);
+  for (size_t m = 0; m < scores.size(); ++m) {
+    reason +=
+        fmt::format("{} {} {:.4f} px", m == 0 ? "" : ",", kDistortionModels[m].terms, scores[m]);
+  }
+  return {&kDistortionModels[chosen], reason};
 }
 
 std::string DescribeRejected(const std::vector<ViewReport>& reports) {
@@ -178,6 +241,21 @@ IntrinsicsCalibration CalibrateIntrinsics(const std::vector<BoardDetection>& vie
       throw std::runtime_error(fmt::format(
           "intrinsics calibration: only {} of {} views fit (at least {} needed); rejected: {}",
           kept.size(), views.size(), min_views, DescribeRejected(result.report.views)));
+  }
+
+  if (given.known) {
+    result.report.distortion_model = "given";
+  } else if (options.choose_distortion_model) {
+    std::vector<const BoardDetection*> kept_pointers;
+    for (size_t i : kept) kept_pointers.push_back(&views[i]);
+    const auto [model, reason] = ChooseDistortionModel(kept_pointers, board, options);
+    result.report.distortion_model = model->terms;
+    result.report.distortion_model_reason = reason;
+    if (model->flags != kDistortionModels[kFullModel].flags) {
+      run = Calibrate(kept_pointers, board, model->flags);
+    }
+  } else {
+    result.report.distortion_model = kDistortionModels[kFullModel].terms;
   }
 
   std::vector<BoardDetection> kept_views;

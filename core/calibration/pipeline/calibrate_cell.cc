@@ -68,6 +68,8 @@ CellCalibration CalibrateCell(const CalibrationDataset& dataset, const Calibrate
   calibration.intrinsics = intrinsics.intrinsics;
   residuals.intrinsics_rms_px = intrinsics.report.rms_px;
   details.warnings = intrinsics.report.warnings;
+  details.distortion_model = intrinsics.report.distortion_model;
+  details.distortion_model_reason = intrinsics.report.distortion_model_reason;
   std::vector<DetectedShot> kept;
   for (size_t i = 0; i < detected.size(); ++i) {
     const ViewReport& view = intrinsics.report.views[i];
@@ -141,10 +143,11 @@ CellCalibration CalibrateCell(const CalibrationDataset& dataset, const Calibrate
 
   calibration.dh = options.dh;
   calibration.note = fmt::format(
-      "{} images, {} used: {} hand-eye poses, {} table angles{}; board {}x{} {} mm",
+      "{} images, {} used: {} hand-eye poses, {} table angles{}; board {}x{} {} mm; "
+      "distortion {}",
       dataset.shots.size(), kept.size(), details.hand_eye_views, details.turntable_views,
       calibration.turntable_calibrated ? "" : " (turntable not calibrated)", dataset.board.cols,
-      dataset.board.rows, dataset.board.square_size * 1000);
+      dataset.board.rows, dataset.board.square_size * 1000, details.distortion_model);
   if (const std::string problem = calibration.Validate(); !problem.empty()) {
     throw std::runtime_error("calibration refused: " + problem);
   }

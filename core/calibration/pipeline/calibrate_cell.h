@@ -36,6 +36,8 @@ struct CalibrationDetails {
   int turntable_views = 0;
   double closed_form_rms_px = 0;  // the hand-eye closed form's reprojection RMS, before refining
   TurntableAxis turntable_axis_base;
+  std::string distortion_model;  // the intrinsics' terms estimated ("given": --intrinsics)
+  std::string distortion_model_reason;
   std::vector<std::string> warnings;
 };
 
