@@ -122,6 +122,12 @@ int RunSolve(const CalibrateArgs& args) {
                                   "T_base_table is the board in the base frame, and a scan "
                                   "refuses this calibration\n"));
   std::cout << fmt::format(
+      "  hand-eye kept: {}, leave-one-out {:.4f} deg / {:.3f} mm (the {}: {:.4f} deg / {:.3f} "
+      "mm, {:.3f} px)\n",
+      r.hand_eye_method, r.hand_eye_loo_rotation_deg, r.hand_eye_loo_translation_mm,
+      r.alternative_method, r.alternative_loo_rotation_deg, r.alternative_loo_translation_mm,
+      r.alternative_rms_px);
+  std::cout << fmt::format(
       "  distortion model: {}{}\n", details.distortion_model,
       details.distortion_model_reason.empty() ? "" : " (" + details.distortion_model_reason + ")");
   for (const std::string& why : r.rejected) std::cout << "  left out: " << why << "\n";

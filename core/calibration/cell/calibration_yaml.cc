@@ -141,6 +141,18 @@ std::string CalibrationToYaml(const CellCalibration& calibration) {
   out << YAML::Key << "hand_eye_translation_mm" << YAML::Value << r.hand_eye_translation_mm;
   out << YAML::Key << "turntable_centre_rms_mm" << YAML::Value << r.turntable_centre_rms_mm;
   out << YAML::Key << "turntable_angles" << YAML::Value << r.turntable_angles;
+  if (!r.hand_eye_method.empty()) {
+    out << YAML::Key << "hand_eye_method" << YAML::Value << r.hand_eye_method;
+    out << YAML::Key << "hand_eye_loo_rotation_deg" << YAML::Value << r.hand_eye_loo_rotation_deg;
+    out << YAML::Key << "hand_eye_loo_translation_mm" << YAML::Value
+        << r.hand_eye_loo_translation_mm;
+    out << YAML::Key << "alternative" << YAML::Value << YAML::BeginMap;
+    out << YAML::Key << "method" << YAML::Value << r.alternative_method;
+    out << YAML::Key << "rms_px" << YAML::Value << r.alternative_rms_px;
+    out << YAML::Key << "loo_rotation_deg" << YAML::Value << r.alternative_loo_rotation_deg;
+    out << YAML::Key << "loo_translation_mm" << YAML::Value << r.alternative_loo_translation_mm;
+    out << YAML::EndMap;
+  }
   out << YAML::Key << "views" << YAML::Value << YAML::BeginSeq;
   for (size_t i = 0; i < r.view_names.size(); ++i) {
     out << YAML::Flow << YAML::BeginMap << YAML::Key << "name" << YAML::Value << r.view_names[i]
@@ -207,6 +219,16 @@ CellCalibration CalibrationFromYaml(const std::string& text, const std::string& 
     r.hand_eye_translation_mm = read.Number(residuals, "hand_eye_translation_mm");
     r.turntable_centre_rms_mm = read.Number(residuals, "turntable_centre_rms_mm");
     r.turntable_angles = read.Integer(residuals, "turntable_angles");
+    if (const YAML::Node method = residuals["hand_eye_method"]) {  // absent in older files
+      r.hand_eye_method = method.as<std::string>("");
+      r.hand_eye_loo_rotation_deg = read.Number(residuals, "hand_eye_loo_rotation_deg");
+      r.hand_eye_loo_translation_mm = read.Number(residuals, "hand_eye_loo_translation_mm");
+      const YAML::Node alternative = read.Child(residuals, "alternative");
+      r.alternative_method = read.Child(alternative, "method").as<std::string>("");
+      r.alternative_rms_px = read.Number(alternative, "rms_px");
+      r.alternative_loo_rotation_deg = read.Number(alternative, "loo_rotation_deg");
+      r.alternative_loo_translation_mm = read.Number(alternative, "loo_translation_mm");
+    }
     for (const YAML::Node& view : read.Child(residuals, "views")) {
       r.view_names.push_back(read.Child(view, "name").as<std::string>());
       r.view_rms_px.push_back(read.Number(view, "rms_px"));

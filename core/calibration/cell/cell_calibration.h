@@ -32,6 +32,16 @@ struct CalibrationResiduals {
   double hand_eye_rms_px = 0;         // board corners through the refined hand-eye chain
   double hand_eye_rotation_deg = 0;   // AX=ZB residuals (median over poses)
   double hand_eye_translation_mm = 0;
+  // Which hand-eye was kept ("refined" or "closed form") and how well each predicts a pose
+  // left out of its fit (median; calibration/pipeline/hand_eye_choice.h). Empty method: a file
+  // from before the choice.
+  std::string hand_eye_method;
+  double hand_eye_loo_rotation_deg = 0;
+  double hand_eye_loo_translation_mm = 0;
+  std::string alternative_method;
+  double alternative_rms_px = 0;
+  double alternative_loo_rotation_deg = 0;
+  double alternative_loo_translation_mm = 0;
   double turntable_centre_rms_mm = 0;  // board points about the fitted axis
   int turntable_angles = 0;
 };

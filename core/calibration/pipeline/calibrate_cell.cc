@@ -8,6 +8,7 @@
 #include "core/calibration/board/board_pose.h"
 #include "core/calibration/board/chessboard_detection.h"
 #include "core/calibration/hand_eye/robot_world_hand_eye.h"
+#include "core/calibration/pipeline/hand_eye_choice.h"
 
 namespace avc::calibration {
 namespace {
@@ -98,18 +99,28 @@ CellCalibration CalibrateCell(const CalibrationDataset& dataset, const Calibrate
   }
   details.hand_eye_views = static_cast<int>(observations.size());
   report(fmt::format("hand-eye from {} poses", observations.size()));
-  const hand_eye::HandEyeSolution closed =
-      hand_eye::SolveRobotWorldHandEye(observations, options.diversity);
-  const hand_eye::RefinementResult refined =
-      hand_eye::RefineOnReprojection(board_views, calibration.intrinsics, closed.T_board_base,
-                                     closed.T_cam_flange, options.refinement);
-  calibration.T_flange_cam = refined.T_cam_flange.inverse();
-  residuals.view_rms_px = refined.view_rms_px;
-  residuals.hand_eye_rms_px = refined.rms_px;
-  details.closed_form_rms_px = refined.initial_rms_px;
+  const HandEyeChoice choice = ChooseHandEye(observations, board_views, calibration.intrinsics,
+                                             options.diversity, options.refinement);
+  const HandEyeCandidate& chosen = choice.chosen;
+  report(fmt::format(
+      "hand-eye: {} (leave-one-out {:.4f} deg / {:.3f} mm; {} {:.4f} deg / "
+      "{:.3f} mm)",
+      chosen.method, chosen.loo_rotation_deg, chosen.loo_translation_mm, choice.alternative.method,
+      choice.alternative.loo_rotation_deg, choice.alternative.loo_translation_mm));
+  calibration.T_flange_cam = chosen.T_cam_flange.inverse();
+  residuals.view_rms_px = chosen.view_rms_px;
+  residuals.hand_eye_rms_px = chosen.rms_px;
+  residuals.hand_eye_method = chosen.method;
+  residuals.hand_eye_loo_rotation_deg = chosen.loo_rotation_deg;
+  residuals.hand_eye_loo_translation_mm = chosen.loo_translation_mm;
+  residuals.alternative_method = choice.alternative.method;
+  residuals.alternative_rms_px = choice.alternative.rms_px;
+  residuals.alternative_loo_rotation_deg = choice.alternative.loo_rotation_deg;
+  residuals.alternative_loo_translation_mm = choice.alternative.loo_translation_mm;
+  details.closed_form_rms_px = choice.closed_form_rms_px;
   std::vector<double> rotation_deg, translation_mm;
   for (const hand_eye::PoseResidual& r :
-       hand_eye::PoseResiduals(observations, refined.T_board_base, refined.T_cam_flange)) {
+       hand_eye::PoseResiduals(observations, chosen.T_board_base, chosen.T_cam_flange)) {
     rotation_deg.push_back(r.rotation_deg);
     translation_mm.push_back(r.translation_mm);
   }
@@ -129,7 +140,7 @@ CellCalibration CalibrateCell(const CalibrationDataset& dataset, const Calibrate
     // robot-world; the board's pose stands where the table frame would be.
     report("no turntable shots: the turntable is not calibrated");
     calibration.turntable_calibrated = false;
-    calibration.T_base_table = refined.T_board_base.inverse();
+    calibration.T_base_table = chosen.T_board_base.inverse();
     calibration.T_table_board = Eigen::Isometry3d::Identity();
   } else {
     report(fmt::format("turntable axis from {} angles", table_views.size()));

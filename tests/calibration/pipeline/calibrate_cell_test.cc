@@ -93,6 +93,20 @@ TEST(CalibrateCell, RecoversTheSimulatedCellAndPredictsCamerasAtUnseenPoses) {
   EXPECT_EQ(details.hand_eye_views, 12);
   EXPECT_EQ(details.turntable_views, 10);
   EXPECT_LT(calibration.residuals.hand_eye_rms_px, 0.3);
+  // The simulated arm's poses are as consistent as the refinement's prior assumes: the refined
+  // hand-eye predicts held-out poses better than the closed form, and is kept; both are
+  // recorded, in calibration.yaml too.
+  const CalibrationResiduals& r = calibration.residuals;
+  EXPECT_EQ(r.hand_eye_method, "refined");
+  EXPECT_EQ(r.alternative_method, "closed form");
+  EXPECT_GT(r.hand_eye_loo_rotation_deg, 0);
+  EXPECT_LT(r.hand_eye_loo_rotation_deg, r.alternative_loo_rotation_deg);
+  EXPECT_LT(r.hand_eye_loo_rotation_deg, 0.02);
+  EXPECT_LT(r.hand_eye_loo_translation_mm, 0.2);
+  SaveCalibration(calibration, dir / "calibration.yaml");
+  const CalibrationResiduals read = LoadCalibration(dir / "calibration.yaml").residuals;
+  EXPECT_EQ(read.hand_eye_method, "refined");
+  EXPECT_EQ(read.alternative_loo_translation_mm, r.alternative_loo_translation_mm);
 
   const camera::Intrinsics& k = calibration.intrinsics;
   const camera::Intrinsics& t = rendered.truth.intrinsics;
