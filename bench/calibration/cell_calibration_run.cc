@@ -11,8 +11,10 @@
 #include "core/bus/bus.h"
 #include "core/calibration/cell/calibration_yaml.h"
 #include "core/calibration/pipeline/calibrate_cell.h"
+#include "core/kinematics/safety_envelope.h"
 #include "drivers/client/cell_client.h"
 #include "services/calibrator/calibration_collector.h"
+#include "sim/cell/cell_fixtures.h"
 #include "sim/cell/view_selection.h"
 #include "sim/emulators/cell/simulated_cell.h"
 #include "sim/scene/chessboard_scene.h"
@@ -54,6 +56,8 @@ nlohmann::json RunCellCalibration(const CellCalibrationRunOptions& options) {
     collect.folder = options.work_dir / "dataset";
     collect.plan.hand_eye_poses = options.hand_eye_poses;
     collect.plan.table_angles = options.table_angles;
+    // CellProcesses' avc-robot enforces the nominal cell's envelope: plan inside it.
+    collect.plan.envelope = kinematics::PlanningEnvelope(sim::NominalCellEnvelope());
     const auto progress = [](const std::string& what) { std::cerr << "  " << what << "\n"; };
     const calibration::CalibrationDataset dataset =
         calibrator::CollectCalibrationDataset(client, collect, progress);
