@@ -9,6 +9,7 @@
 #include "core/calibration/board/chessboard_detection.h"
 #include "core/calibration/hand_eye/robot_world_hand_eye.h"
 #include "core/calibration/pipeline/hand_eye_choice.h"
+#include "core/util/upper_median.h"
 
 namespace avc::calibration {
 namespace {
@@ -18,12 +19,6 @@ struct DetectedShot {
   BoardDetection detection;
   Eigen::Isometry3d T_cam_board = Eigen::Isometry3d::Identity();
 };
-
-double Median(std::vector<double> values) {
-  if (values.empty()) return 0;
-  std::sort(values.begin(), values.end());
-  return values[values.size() / 2];
-}
 
 std::vector<Eigen::Vector3d> BoardPoints(const Chessboard& board) {
   std::vector<Eigen::Vector3d> points;
@@ -124,8 +119,8 @@ CellCalibration CalibrateCell(const CalibrationDataset& dataset, const Calibrate
     rotation_deg.push_back(r.rotation_deg);
     translation_mm.push_back(r.translation_mm);
   }
-  residuals.hand_eye_rotation_deg = Median(rotation_deg);
-  residuals.hand_eye_translation_mm = Median(translation_mm);
+  residuals.hand_eye_rotation_deg = UpperMedian(rotation_deg);
+  residuals.hand_eye_translation_mm = UpperMedian(translation_mm);
 
   // 4. The turntable axis from the board carried into the base frame.
   std::vector<TurntableView> table_views;

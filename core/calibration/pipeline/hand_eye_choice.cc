@@ -5,14 +5,14 @@
 #include <limits>
 #include <stdexcept>
 
+#include "core/util/upper_median.h"
+
 namespace avc::calibration {
 namespace {
 
-double Median(std::vector<double> values) {
-  if (values.empty()) return std::numeric_limits<double>::infinity();
-  std::sort(values.begin(), values.end());
-  const size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+// No folds at all: no evidence for the candidate.
+double Median(const std::vector<double>& values) {
+  return values.empty() ? std::numeric_limits<double>::infinity() : UpperMedian(values);
 }
 
 template <class T>
