@@ -1,9 +1,14 @@
 #include "core/calibration/pipeline/hand_eye_choice.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
+#include <tuple>
+#include <utility>
 
 #include "core/util/upper_median.h"
 
@@ -30,6 +35,23 @@ double Rms(const std::vector<double>& view_rms) {
   return view_rms.empty() ? 0 : std::sqrt(squared / static_cast<double>(view_rms.size()));
 }
 
+// The refinement's robot-pose prior widened to what the closed form's pose residuals show: each
+// residual mixes the robot's error with the camera's, so half its median (per axis of the two
+// poses compared) bounds the robot's from above; never tighter than the given prior.
+hand_eye::RefinementOptions RobotNoiseFromResiduals(const hand_eye::HandEyeSolution& closed,
+                                                    hand_eye::RefinementOptions options) {
+  std::vector<double> rotation, translation;
+  for (const hand_eye::PoseResidual& r : closed.residuals) {
+    rotation.push_back(r.rotation_deg);
+    translation.push_back(r.translation_mm);
+  }
+  options.robot_rotation_sigma_deg =
+      std::max(options.robot_rotation_sigma_deg, UpperMedian(rotation) / 2);
+  options.robot_translation_sigma_mm =
+      std::max(options.robot_translation_sigma_mm, UpperMedian(translation) / 2);
+  return options;
+}
+
 double Score(const HandEyeCandidate& candidate) {
   return candidate.loo_rotation_deg / 0.01 + candidate.loo_translation_mm / 0.1;
 }
@@ -43,23 +65,39 @@ HandEyeChoice ChooseHandEye(const std::vector<hand_eye::HandEyeObservation>& obs
                             const hand_eye::RefinementOptions& refinement) {
   const hand_eye::HandEyeSolution closed =
       hand_eye::SolveRobotWorldHandEye(observations, diversity);
-  const hand_eye::RefinementResult refined = hand_eye::RefineOnReprojection(
-      board_views, intrinsics, closed.T_board_base, closed.T_cam_flange, refinement);
-  HandEyeCandidate closed_form;
-  closed_form.method = "closed form";
-  closed_form.T_board_base = closed.T_board_base;
-  closed_form.T_cam_flange = closed.T_cam_flange;
-  closed_form.view_rms_px = hand_eye::ViewReprojectionRms(board_views, intrinsics,
-                                                          closed.T_board_base, closed.T_cam_flange);
-  closed_form.rms_px = Rms(closed_form.view_rms_px);
-  HandEyeCandidate refined_form;
-  refined_form.method = "refined";
-  refined_form.T_board_base = refined.T_board_base;
-  refined_form.T_cam_flange = refined.T_cam_flange;
-  refined_form.view_rms_px = refined.view_rms_px;
-  refined_form.rms_px = refined.rms_px;
+  // The candidates in order of preference on a tie: nullopt = the closed form.
+  std::vector<std::pair<std::string, std::optional<hand_eye::RefinementOptions>>> methods = {
+      {"refined", refinement}};
+  const hand_eye::RefinementOptions from_data = RobotNoiseFromResiduals(closed, refinement);
+  if (from_data.robot_rotation_sigma_deg > refinement.robot_rotation_sigma_deg ||
+      from_data.robot_translation_sigma_mm > refinement.robot_translation_sigma_mm) {
+    methods.push_back(
+        {fmt::format("refined, robot noise {:.3g} deg / {:.3g} mm from the data",
+                     from_data.robot_rotation_sigma_deg, from_data.robot_translation_sigma_mm),
+         from_data});
+  }
+  methods.push_back({"closed form", std::nullopt});
 
-  std::vector<double> closed_rotation, closed_translation, refined_rotation, refined_translation;
+  // Each method on all poses, and without each pose in turn.
+  const auto solve = [&](const std::optional<hand_eye::RefinementOptions>& method,
+                         const std::vector<hand_eye::BoardView>& views,
+                         const hand_eye::HandEyeSolution& start) {
+    if (!method) return std::pair{start.T_board_base, start.T_cam_flange};
+    const hand_eye::RefinementResult refined = hand_eye::RefineOnReprojection(
+        views, intrinsics, start.T_board_base, start.T_cam_flange, *method);
+    return std::pair{refined.T_board_base, refined.T_cam_flange};
+  };
+  std::vector<HandEyeCandidate> candidates;
+  for (const auto& [name, method] : methods) {
+    HandEyeCandidate candidate;
+    candidate.method = name;
+    std::tie(candidate.T_board_base, candidate.T_cam_flange) = solve(method, board_views, closed);
+    candidate.view_rms_px = hand_eye::ViewReprojectionRms(
+        board_views, intrinsics, candidate.T_board_base, candidate.T_cam_flange);
+    candidate.rms_px = Rms(candidate.view_rms_px);
+    candidates.push_back(std::move(candidate));
+  }
+  std::vector<std::vector<double>> rotation(methods.size()), translation(methods.size());
   for (size_t i = 0; i < observations.size(); ++i) {
     hand_eye::HandEyeSolution fold;
     try {
@@ -67,27 +105,28 @@ HandEyeChoice ChooseHandEye(const std::vector<hand_eye::HandEyeObservation>& obs
     } catch (const std::runtime_error&) {
       continue;  // the other poses alone cannot determine it
     }
-    const hand_eye::RefinementResult fold_refined = hand_eye::RefineOnReprojection(
-        Without(board_views, i), intrinsics, fold.T_board_base, fold.T_cam_flange, refinement);
-    const hand_eye::PoseResidual closed_error =
-        hand_eye::PoseResiduals({observations[i]}, fold.T_board_base, fold.T_cam_flange)[0];
-    const hand_eye::PoseResidual refined_error = hand_eye::PoseResiduals(
-        {observations[i]}, fold_refined.T_board_base, fold_refined.T_cam_flange)[0];
-    closed_rotation.push_back(closed_error.rotation_deg);
-    closed_translation.push_back(closed_error.translation_mm);
-    refined_rotation.push_back(refined_error.rotation_deg);
-    refined_translation.push_back(refined_error.translation_mm);
+    const std::vector<hand_eye::BoardView> fold_views = Without(board_views, i);
+    for (size_t m = 0; m < methods.size(); ++m) {
+      const auto [X, Z] = solve(methods[m].second, fold_views, fold);
+      const hand_eye::PoseResidual error = hand_eye::PoseResiduals({observations[i]}, X, Z)[0];
+      rotation[m].push_back(error.rotation_deg);
+      translation[m].push_back(error.translation_mm);
+    }
   }
-  closed_form.loo_rotation_deg = Median(closed_rotation);
-  closed_form.loo_translation_mm = Median(closed_translation);
-  refined_form.loo_rotation_deg = Median(refined_rotation);
-  refined_form.loo_translation_mm = Median(refined_translation);
-
+  for (size_t m = 0; m < methods.size(); ++m) {
+    candidates[m].loo_rotation_deg = Median(rotation[m]);
+    candidates[m].loo_translation_mm = Median(translation[m]);
+  }
+  // Best first; std::stable_sort keeps the order of preference on a tie.
+  std::stable_sort(
+      candidates.begin(), candidates.end(),
+      [](const HandEyeCandidate& a, const HandEyeCandidate& b) { return Score(a) < Score(b); });
   HandEyeChoice choice;
-  choice.closed_form_rms_px = refined.initial_rms_px;
-  const bool refined_wins = Score(refined_form) <= Score(closed_form);
-  choice.chosen = refined_wins ? refined_form : closed_form;
-  choice.alternative = refined_wins ? closed_form : refined_form;
+  choice.closed_form_rms_px = Rms(hand_eye::ViewReprojectionRms(
+      board_views, intrinsics, closed.T_board_base, closed.T_cam_flange));
+  choice.chosen = candidates[0];
+  choice.alternative = candidates[1];
+  choice.candidates = candidates;
   return choice;
 }
 

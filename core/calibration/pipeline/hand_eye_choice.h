@@ -31,13 +31,17 @@ struct HandEyeCandidate {
 
 struct HandEyeChoice {
   HandEyeCandidate chosen;
-  HandEyeCandidate alternative;
+  HandEyeCandidate alternative;              // the runner-up
+  std::vector<HandEyeCandidate> candidates;  // every one tried, best first
   double closed_form_rms_px = 0;
 };
 
-// Both candidates from all poses, scored by leave-one-out (rotation in units of 0.01 deg plus
-// translation in units of 0.1 mm, the targets' ratio); the refined one on a tie. A fold whose
-// remaining poses the closed form refuses (too little rotation) is skipped. Throws what
+// The candidates: the refinement with the given robot-pose prior; the refinement with the prior
+// widened to the closed form's pose residuals when they show a noisier arm (half their median);
+// the closed form. Each is solved from all poses and scored by leave-one-out (rotation in units of
+// 0.01 deg plus translation in units of 0.1 mm, the targets' ratio); on a tie the earlier one in
+// that order. A fold whose remaining poses the closed form refuses (too little rotation) is
+// skipped. Throws what
 // SolveRobotWorldHandEye and RefineOnReprojection throw for the whole set.
 HandEyeChoice ChooseHandEye(const std::vector<hand_eye::HandEyeObservation>& observations,
                             const std::vector<hand_eye::BoardView>& board_views,
