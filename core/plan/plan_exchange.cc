@@ -16,8 +16,7 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-constexpr const char* kPhaseNames[] = {"FRAME", "INITIAL_CAPTURE", "ACTIVE_VISION",
-                                       "PRUNE_VIEWS"};
+constexpr const char* kPhaseNames[] = {"FRAME", "INITIAL_CAPTURE", "ACTIVE_VISION", "PRUNE_VIEWS"};
 
 json ViewJson(const ViewRequest& view) {
   return {{"joints", std::vector<double>(view.joints.data(), view.joints.data() + 6)},
@@ -109,8 +108,7 @@ std::string EncodeMask(const cv::Mat& mask) {
 }
 
 cv::Mat DecodeMask(const std::string& png, const std::string& what) {
-  const cv::Mat bytes(1, static_cast<int>(png.size()), CV_8UC1,
-                      const_cast<char*>(png.data()));
+  const cv::Mat bytes(1, static_cast<int>(png.size()), CV_8UC1, const_cast<char*>(png.data()));
   cv::Mat mask = png.empty() ? cv::Mat() : cv::imdecode(bytes, cv::IMREAD_UNCHANGED);
   if (mask.empty() || mask.type() != CV_8UC1) {
     throw std::runtime_error(what + " is not an 8-bit one-channel image");
@@ -223,8 +221,8 @@ PlanAnswer ReadPlanAnswer(const fs::path& folder) {
     answer.next = reader.View(next, "next");
   }
   if (const json& keep_out = reader.Field(root, "keep_out", "the answer"); !keep_out.is_null()) {
-    answer.keep_out.T_base_table =
-        kinematics::IsometryFromRowMajor(reader.Numbers(keep_out, "T_base_table", "keep_out", 16).data());
+    answer.keep_out.T_base_table = kinematics::IsometryFromRowMajor(
+        reader.Numbers(keep_out, "T_base_table", "keep_out", 16).data());
     answer.keep_out.z0_m = reader.Number(keep_out, "z0_m", "keep_out");
     answer.keep_out.slab_m = reader.Number(keep_out, "slab_m", "keep_out");
     answer.keep_out.radius_m = reader.Numbers(keep_out, "radius_m", "keep_out");

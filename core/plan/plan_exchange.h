@@ -66,9 +66,9 @@ struct FinalPlan {
 
 struct PlanAnswer {
   PlanPhase phase = PlanPhase::kFrame;
-  std::optional<ViewRequest> next;         // the view to capture next; nullopt when finished
-  std::optional<FinalPlan> final_plan;     // when finished
-  kinematics::PlantKeepOut keep_out;       // the plant's space so far (empty before a proxy)
+  std::optional<ViewRequest> next;              // the view to capture next; nullopt when finished
+  std::optional<FinalPlan> final_plan;          // when finished
+  kinematics::PlantKeepOut keep_out;            // the plant's space so far (empty before a proxy)
   std::map<std::string, std::string> settings;  // the planner's settings in force
 };
 
