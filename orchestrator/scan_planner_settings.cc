@@ -4,6 +4,8 @@
 
 #include <stdexcept>
 
+#include "core/plan/plan_settings.h"
+
 namespace avc::orchestrator {
 namespace {
 
@@ -36,7 +38,7 @@ PlannerSettings RecordedPlannerSettings(const nlohmann::json& options) {
   }
   // Older scans kept Algorithm 1's counts as numbers beside the other options.
   for (const char* key :
-       {kMaxViewsSetting, kLevelsSetting, kViewsPerLevelSetting, kPruneFaceLossSetting}) {
+       {plan::kMaxViews, plan::kLevels, plan::kViewsPerLevel, plan::kPruneFaceLoss}) {
     const auto it = options.find(key);
     if (it == options.end()) continue;
     if (!it->is_number()) Fail(key, "must be a number, got " + it->dump());

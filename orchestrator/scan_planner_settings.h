@@ -15,12 +15,6 @@ namespace avc::orchestrator {
 
 using PlannerSettings = std::map<std::string, std::string>;
 
-// The keys of Algorithm 1's counts, which `avc scan` sets from its flags.
-inline constexpr char kMaxViewsSetting[] = "max_views";
-inline constexpr char kLevelsSetting[] = "levels";
-inline constexpr char kViewsPerLevelSetting[] = "views_per_level";
-inline constexpr char kPruneFaceLossSetting[] = "prune_face_loss";
-
 // Writes settings into options["planner_settings"].
 void RecordPlannerSettings(const PlannerSettings& settings, nlohmann::json* options);
 

@@ -5,10 +5,10 @@
 #include <charconv>
 #include <cmath>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
 
 #include "core/kinematics/safety_envelope.h"
+#include "core/plan/plan_settings.h"
 
 namespace avc::planner {
 namespace {
@@ -47,29 +47,25 @@ PlanSettings ParsePlanSettings(const std::vector<std::string>& assignments) {
     const std::string name = assignment.substr(0, equals);
     const std::string value = assignment.substr(equals + 1);
     constexpr double kHuge = 1e6;
-    if (name == "max_views") {
+    if (name == plan::kMaxViews) {
       planner.max_views = Parse(name, value, 1, 10000);
-    } else if (name == "levels") {
+    } else if (name == plan::kLevels) {
       planner.levels = Parse(name, value, 1, 100);
-    } else if (name == "views_per_level") {
+    } else if (name == plan::kViewsPerLevel) {
       planner.views_per_level = Parse(name, value, 1, 1000);
-    } else if (name == "prune_face_loss") {
+    } else if (name == plan::kPruneFaceLoss) {
       planner.prune_max_covered_faces_lost = Parse(name, value, 0.0, 1.0);
-    } else if (name == "table_z") {
+    } else if (name == plan::kTableZ) {
       table_z = Parse(name, value, -kHuge, kHuge);
-    } else if (name == "table_clearance") {
+    } else if (name == plan::kTableClearance) {
       table_clearance = Parse(name, value, 0.0, kHuge);
-    } else if (name == "keep_out") {
-      std::istringstream numbers(value);
-      double n[5];
-      for (double& x : n) {
-        if (!(numbers >> x)) {
-          throw std::invalid_argument(fmt::format(
-              "plan setting keep_out: '{}' is not five numbers (x y radius z_min z_max)", value));
-        }
+    } else if (name == plan::kKeepOut) {
+      keep_out = plan::ParseKeepOut(value);
+      if (!keep_out) {
+        throw std::invalid_argument(fmt::format(
+            "plan setting keep_out: '{}' is not five numbers (x y radius z_min z_max)", value));
       }
-      keep_out = kinematics::KeepOutCylinder{Eigen::Vector2d(n[0], n[1]), n[2], n[3], n[4]};
-    } else if (name == "keep_out_margin") {
+    } else if (name == plan::kKeepOutMargin) {
       settings.keep_out_margin = Parse(name, value, 0.0, 1.0);
     } else {
       throw std::invalid_argument(
@@ -94,11 +90,11 @@ PlanSettings ParsePlanSettings(const std::vector<std::string>& assignments) {
 std::map<std::string, std::string> DescribePlanSettings(const PlanSettings& settings) {
   const ActiveVisionOptions& planner = settings.planner;
   std::map<std::string, std::string> described = {
-      {"max_views", std::to_string(planner.max_views)},
-      {"levels", std::to_string(planner.levels)},
-      {"views_per_level", std::to_string(planner.views_per_level)},
-      {"prune_face_loss", Text(planner.prune_max_covered_faces_lost)},
-      {"keep_out_margin", Text(settings.keep_out_margin)}};
+      {plan::kMaxViews, std::to_string(planner.max_views)},
+      {plan::kLevels, std::to_string(planner.levels)},
+      {plan::kViewsPerLevel, std::to_string(planner.views_per_level)},
+      {plan::kPruneFaceLoss, Text(planner.prune_max_covered_faces_lost)},
+      {plan::kKeepOutMargin, Text(settings.keep_out_margin)}};
   return described;
 }
 

@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/plan/plan_settings.h"
+
 namespace avc::orchestrator {
 namespace {
 
@@ -59,8 +61,8 @@ TEST(ScanPlannerSettings, DamagedValuesAreRefusedNamingTheKey) {
 TEST(ScanPlannerSettings, ChangesAreNamedWithBothValues) {
   const PlannerSettings recorded = {{"max_views", "14"}, {"prune_face_loss", "1"}};
   PlannerSettings given = recorded;
-  const std::set<std::string> all = {kMaxViewsSetting, kLevelsSetting, kViewsPerLevelSetting,
-                                     kPruneFaceLossSetting};
+  const std::set<std::string> all = {plan::kMaxViews, plan::kLevels, plan::kViewsPerLevel,
+                                     plan::kPruneFaceLoss};
   EXPECT_EQ(DescribePlannerChanges(recorded, given, all), "")
       << "the same settings plan the same views";
   given["max_views"] = "50";
@@ -69,7 +71,7 @@ TEST(ScanPlannerSettings, ChangesAreNamedWithBothValues) {
   EXPECT_EQ(DescribePlannerChanges(recorded, given, all),
             "max_views 14 (given 50), prune_face_loss 1 (given 0.01)");
   // A setting the caller did not choose (a default of the command line) is not a change.
-  EXPECT_EQ(DescribePlannerChanges(recorded, given, {kPruneFaceLossSetting}),
+  EXPECT_EQ(DescribePlannerChanges(recorded, given, {plan::kPruneFaceLoss}),
             "prune_face_loss 1 (given 0.01)");
 }
 

@@ -14,9 +14,9 @@
 #include <utility>
 
 #include "core/bus/bus.h"
+#include "core/plan/plan_settings.h"
 #include "core/stage/stage_client.h"
 #include "drivers/client/cell_client.h"
-#include "orchestrator/scan_planner_settings.h"
 #include "orchestrator/scan_run.h"
 #include "orchestrator/scan_states.h"
 #include "tools/avc/auth_flags.h"
@@ -72,8 +72,7 @@ int RunScanCommand(const ScanArgs& args) {
   options.calibration_file = args.calibration;
   options.planner_settings = PlanJobSettings(args.planner, DriverEnvelopeOf(args.envelope));
   // Algorithm 1's counts the caller chose: a resume may not change them.
-  for (const char* key : {orchestrator::kMaxViewsSetting, orchestrator::kViewsPerLevelSetting,
-                          orchestrator::kPruneFaceLossSetting}) {
+  for (const char* key : {plan::kMaxViews, plan::kViewsPerLevel, plan::kPruneFaceLoss}) {
     if (options.planner_settings.contains(key)) options.planner_settings_given.insert(key);
   }
   if (args.jpeg) options.capture.encoding = avc::image_t::ENCODING_JPEG;

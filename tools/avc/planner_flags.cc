@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "orchestrator/scan_planner_settings.h"
+#include "core/plan/plan_settings.h"
 
 namespace avc::cli {
 
@@ -29,21 +29,14 @@ void AddPlannerFlags(CLI::App* command, PlannerFlags* flags, bool views_per_heig
 std::map<std::string, std::string> PlanJobSettings(
     const PlannerFlags& flags, const std::optional<kinematics::SafetyEnvelope>& driver) {
   std::map<std::string, std::string> settings;
-  if (flags.max_views) settings[orchestrator::kMaxViewsSetting] = std::to_string(*flags.max_views);
+  if (flags.max_views) settings[plan::kMaxViews] = std::to_string(*flags.max_views);
   if (flags.prune_face_loss) {
-    settings[orchestrator::kPruneFaceLossSetting] = fmt::format("{}", *flags.prune_face_loss);
+    settings[plan::kPruneFaceLoss] = fmt::format("{}", *flags.prune_face_loss);
   }
   if (flags.views_per_height) {
-    settings[orchestrator::kViewsPerLevelSetting] = std::to_string(*flags.views_per_height);
+    settings[plan::kViewsPerLevel] = std::to_string(*flags.views_per_height);
   }
-  if (!driver) return settings;
-  if (driver->table_z_base_m) settings["table_z"] = fmt::format("{}", *driver->table_z_base_m);
-  settings["table_clearance"] = fmt::format("{}", driver->table_clearance_m);
-  if (const auto& cylinder = driver->keep_out) {
-    settings["keep_out"] =
-        fmt::format("{} {} {} {} {}", cylinder->centre_base.x(), cylinder->centre_base.y(),
-                    cylinder->radius_m, cylinder->z_min_m, cylinder->z_max_m);
-  }
+  if (driver) plan::AddEnvelopeSettings(*driver, &settings);
   return settings;
 }
 
