@@ -20,10 +20,9 @@ namespace {
 constexpr double kDegree = M_PI / 180;
 
 bool SamePose(const CaptureRecord& capture, const plan::ViewRequest& view, double tolerance) {
-  for (int i = 0; i < 6; ++i) {
-    if (std::abs(capture.joints[i] - view.joints[i]) > tolerance) return false;
-  }
-  return std::abs(capture.table_angle - view.table_angle) <= tolerance;
+  const plan::ViewRequest recorded{Eigen::Map<const kinematics::JointVector>(capture.joints.data()),
+                                   capture.table_angle};
+  return plan::SameView(recorded, view, tolerance);
 }
 
 // The file's bytes, or nothing when it is missing or unreadable (it is then captured again).
