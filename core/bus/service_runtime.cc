@@ -19,6 +19,11 @@ ServiceRuntime::ServiceRuntime(const std::string& service, const BusFlags& flags
   });
 }
 
+const std::string& ServiceRuntime::PublishConfig(std::string toml_text) {
+  config_ = std::make_unique<ConfigPublisher>(*bus_, loop_, service_, std::move(toml_text));
+  return config_->sha256();
+}
+
 int ServiceRuntime::Run() {
   log::Info("running on cell '{}' (control {}, bulk {})", bus_->cell(), bus_->options().control_url,
             bus_->options().bulk_url.empty() ? "shared" : bus_->options().bulk_url);

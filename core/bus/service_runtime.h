@@ -6,6 +6,7 @@
 //
 //   bus::ServiceRuntime runtime("avc-collect", flags);
 //   MyNode node(runtime.bus(), ...);
+//   runtime.PublishConfig(table.ToToml(options));
 //   runtime.OnStop([&] { node.Flush(); });
 //   runtime.heartbeat().Set(bus::ServiceState::kReady, "waiting for products");
 //   return runtime.Run();
@@ -16,6 +17,7 @@
 
 #include "core/bus/bus.h"
 #include "core/bus/bus_options.h"
+#include "core/bus/config_publisher.h"
 #include "core/bus/event_loop.h"
 #include "core/bus/heartbeat.h"
 
@@ -33,6 +35,10 @@ class ServiceRuntime {
   HeartbeatPublisher& heartbeat() { return *heartbeat_; }
   const std::string& service() const { return service_; }
 
+  // Publishes the configuration in force on CONFIG from now on (config_publisher.h); returns its
+  // SHA-256, which the service names in what it makes.
+  const std::string& PublishConfig(std::string toml_text);
+
   // Runs on the loop thread when a termination signal arrives, before Run() returns.
   void OnStop(std::function<void()> on_stop) { on_stop_ = std::move(on_stop); }
   // Runs the event loop until SIGINT/SIGTERM or Quit; returns the exit code.
@@ -43,6 +49,7 @@ class ServiceRuntime {
   EventLoop loop_;
   std::unique_ptr<Bus> bus_;
   std::unique_ptr<HeartbeatPublisher> heartbeat_;
+  std::unique_ptr<ConfigPublisher> config_;
   std::function<void()> on_stop_;
 };
 

@@ -159,6 +159,7 @@ StageAnswer StageClient::Run(const StageRequest& request,
   }
   answer.files = std::move(result.files);
   answer.config_sha256 = result.config_sha256;
+  answer.config_text = result.config_text;
   answer.stage_seconds = result.seconds;
   answer.bytes_received = FileBytes(answer.files);
   return answer;

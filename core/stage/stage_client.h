@@ -50,6 +50,7 @@ struct StageAnswer {
   std::string request_id;
   std::vector<avc::file_t> files;
   std::string config_sha256;   // the service's configuration in force
+  std::string config_text;     // ... as TOML
   double stage_seconds = 0;    // the stage's own run time, as the service measured it
   double wall_seconds = 0;     // request to answer, here
   int64_t bytes_sent = 0;      // the job's files

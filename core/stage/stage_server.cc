@@ -128,6 +128,7 @@ avc::stage_result_t StageServer::RunJob(const avc::stage_job_t& job, const fs::p
   result.stage = job.stage;
   result.service = options_.service;
   result.config_sha256 = options_.config_sha256;
+  result.config_text = options_.config_text;
   const auto start = std::chrono::steady_clock::now();
   try {
     std::error_code ignored;

@@ -47,7 +47,9 @@ struct StageServerOptions {
   std::string service;  // e.g. "avc-builder": the jobs it takes and the receiver name it acks as
   std::string stage;    // e.g. "build"
   StageHandler handler;
-  std::string config_sha256;  // of the service's configuration in force, named in every result
+  // The service's configuration in force (its CONFIG), sent with every result.
+  std::string config_text;
+  std::string config_sha256;
   std::filesystem::path work_root;   // default: $TMPDIR/<service>-<pid>
   size_t remembered_results = 2;     // answers kept for repeated request ids
   products::SenderOptions products;  // required_receivers: set per job to its reply_to

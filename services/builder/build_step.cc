@@ -2,7 +2,7 @@
 
 #include "core/dataset/dataset_reader.h"
 #include "services/builder/build_report.h"
-#include "services/builder/option_overrides.h"
+#include "services/builder/builder_options.h"
 #include "services/builder/reconstruction_output.h"
 
 namespace avc::builder {
@@ -27,7 +27,7 @@ void BuildModel(const fs::path& scan_dir, const fs::path& model_dir,
 stage::StageHandler BuildStageHandler(const ReconstructOptions& base) {
   return [base](const stage::StageWork& work) {
     ReconstructOptions options = base;
-    for (const std::string& setting : work.settings) ApplyOverride(setting, &options);
+    BuilderOptionTable().ApplyTexts(options, work.settings, "the build job's settings");
     BuildModel(work.input_dir, work.output_dir, options, work.progress);
   };
 }

@@ -9,6 +9,7 @@
 #include "core/stage/stage_names.h"
 #include "core/util/file_io.h"
 #include "services/clusterer/cluster_folder.h"
+#include "services/clusterer/clusterer_options.h"
 #include "services/clusterer/clusters_ply.h"
 
 namespace avc::clusterer {
@@ -45,12 +46,10 @@ messages::ClustersContent ReadClustersMessage(const fs::path& file) {
   }
 }
 
-stage::StageHandler ClusterStageHandler(const ClustererOptions& options) {
-  return [options](const stage::StageWork& work) {
-    if (!work.settings.empty()) {
-      throw std::invalid_argument(
-          fmt::format("the cluster stage takes no settings; got '{}'", work.settings.front()));
-    }
+stage::StageHandler ClusterStageHandler(const ClustererOptions& base) {
+  return [base](const stage::StageWork& work) {
+    ClustererOptions options = base;
+    ClustererOptionTable().ApplyTexts(options, work.settings, "the cluster job's settings");
     ClusterModel(work.input_dir, work.output_dir, options);
   };
 }

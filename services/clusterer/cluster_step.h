@@ -21,7 +21,8 @@ messages::ClustersContent ClusterModel(const std::filesystem::path& model_dir,
 // clusters.lcm as written by ClusterModel. Throws std::runtime_error naming the file.
 messages::ClustersContent ReadClustersMessage(const std::filesystem::path& file);
 
-// ClusterModel on a stage job's folders. The job takes no settings (it refuses any).
+// ClusterModel on a stage job's folders, with `options` changed by the job's settings
+// (clusterer_options.h).
 stage::StageHandler ClusterStageHandler(const ClustererOptions& options);
 
 }  // namespace avc::clusterer

@@ -2,8 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <charconv>
-#include <cmath>
 #include <optional>
 #include <stdexcept>
 
@@ -13,76 +11,74 @@
 namespace avc::planner {
 namespace {
 
-template <typename T>
-T Parse(const std::string& name, const std::string& text, T min, T max) {
-  T value{};
-  const char* end = text.data() + text.size();
-  const auto [stop, error] = std::from_chars(text.data(), end, value);
-  if (error != std::errc() || stop != end) {
-    throw std::invalid_argument(fmt::format("plan setting {}: '{}' is not a number", name, text));
-  }
-  if (!(value >= min && value <= max)) {
-    throw std::invalid_argument(
-        fmt::format("plan setting {}: {} is outside [{}, {}]", name, value, min, max));
-  }
-  return value;
+config::OptionTable<PlanSettings> MakeTable() {
+  config::OptionTable<PlanSettings> table("planner");
+  table
+      .Add(plan::kMaxViews, [](auto& o) -> auto& { return o.planner.max_views; },
+           {"views", "most views a scan keeps (Algorithm 1's budget)", 1, 10000})
+      .Add(plan::kLevels, [](auto& o) -> auto& { return o.planner.levels; },
+           {"", "heights of the initial orbit", 1, 100})
+      .Add(plan::kViewsPerLevel, [](auto& o) -> auto& { return o.planner.views_per_level; },
+           {"views", "views per height of the initial orbit", 1, 1000})
+      .Add(plan::kPruneFaceLoss,
+           [](auto& o) -> auto& { return o.planner.prune_max_covered_faces_lost; },
+           {"",
+            "Phase 3 drops a view when at most this fraction of covered proxy faces is lost: "
+            "higher keeps fewer images",
+            0, 1})
+      .Add(plan::kKeepOutMargin, [](auto& o) -> auto& { return o.keep_out_margin; },
+           {"m", "the arm's keep-out around the plant proxy", 0, 1});
+  return table;
 }
 
-// Shortest text that reads back to the same double.
-std::string Text(double value) { return fmt::format("{}", value); }
+double EnvelopeLength(const std::string& name, const std::string& text, double min) {
+  try {
+    return config::ParseReal(text, {"m", "", min, 1e6});
+  } catch (const config::ConfigError& e) {
+    throw config::ConfigError(fmt::format("planner: plan setting {}={}: {}", name, text, e.what()));
+  }
+}
 
 }  // namespace
 
-PlanSettings ParsePlanSettings(const std::vector<std::string>& assignments) {
-  PlanSettings settings;
-  ActiveVisionOptions& planner = settings.planner;
+const config::OptionTable<PlanSettings>& PlanOptionTable() {
+  static const config::OptionTable<PlanSettings> table = MakeTable();
+  return table;
+}
+
+PlanSettings ParsePlanSettings(const std::vector<std::string>& assignments, PlanSettings settings) {
   std::optional<double> table_z;
   double table_clearance = kinematics::SafetyEnvelope{}.table_clearance_m;
   std::optional<kinematics::KeepOutCylinder> keep_out;
-  for (const std::string& assignment : assignments) {
-    const size_t equals = assignment.find('=');
-    if (equals == std::string::npos) {
-      throw std::invalid_argument(fmt::format("plan setting '{}' is not name=value", assignment));
-    }
-    const std::string name = assignment.substr(0, equals);
-    const std::string value = assignment.substr(equals + 1);
-    constexpr double kHuge = 1e6;
-    if (name == plan::kMaxViews) {
-      planner.max_views = Parse(name, value, 1, 10000);
-    } else if (name == plan::kLevels) {
-      planner.levels = Parse(name, value, 1, 100);
-    } else if (name == plan::kViewsPerLevel) {
-      planner.views_per_level = Parse(name, value, 1, 1000);
-    } else if (name == plan::kPruneFaceLoss) {
-      planner.prune_max_covered_faces_lost = Parse(name, value, 0.0, 1.0);
-    } else if (name == plan::kTableZ) {
-      table_z = Parse(name, value, -kHuge, kHuge);
-    } else if (name == plan::kTableClearance) {
-      table_clearance = Parse(name, value, 0.0, kHuge);
-    } else if (name == plan::kKeepOut) {
+  std::vector<config::Assignment> algorithm;
+  for (const std::string& text : assignments) {
+    const config::Assignment assignment = config::ParseAssignment(text, "plan setting");
+    const std::string& value = assignment.value;
+    if (assignment.name == plan::kTableZ) {
+      table_z = EnvelopeLength(assignment.name, value, -1e6);
+    } else if (assignment.name == plan::kTableClearance) {
+      table_clearance = EnvelopeLength(assignment.name, value, 0);
+    } else if (assignment.name == plan::kKeepOut) {
       keep_out = plan::ParseKeepOut(value);
       if (!keep_out) {
-        throw std::invalid_argument(fmt::format(
-            "plan setting keep_out: '{}' is not five numbers (x y radius z_min z_max)", value));
+        throw config::ConfigError(fmt::format(
+            "planner: plan setting keep_out: '{}' is not five numbers (x y radius z_min z_max)",
+            value));
       }
-    } else if (name == plan::kKeepOutMargin) {
-      settings.keep_out_margin = Parse(name, value, 0.0, 1.0);
     } else {
-      throw std::invalid_argument(
-          fmt::format("unknown plan setting '{}' (known: max_views, levels, views_per_level, "
-                      "prune_face_loss, table_z, table_clearance, keep_out, keep_out_margin)",
-                      name));
+      algorithm.push_back(assignment);
     }
   }
+  PlanOptionTable().Apply(settings, algorithm);
   if (table_z || keep_out) {
     kinematics::SafetyEnvelope driver;
     driver.table_z_base_m = table_z;
     driver.table_clearance_m = table_clearance;
     driver.keep_out = keep_out;
     if (const std::string problem = driver.Validate(); !problem.empty()) {
-      throw std::invalid_argument("plan settings: the safety envelope is not usable: " + problem);
+      throw config::ConfigError("planner: the plan's safety envelope is not usable: " + problem);
     }
-    planner.reach.envelope = kinematics::PlanningEnvelope(driver);
+    settings.planner.reach.envelope = kinematics::PlanningEnvelope(driver);
   }
   return settings;
 }
@@ -93,8 +89,8 @@ std::map<std::string, std::string> DescribePlanSettings(const PlanSettings& sett
       {plan::kMaxViews, std::to_string(planner.max_views)},
       {plan::kLevels, std::to_string(planner.levels)},
       {plan::kViewsPerLevel, std::to_string(planner.views_per_level)},
-      {plan::kPruneFaceLoss, Text(planner.prune_max_covered_faces_lost)},
-      {plan::kKeepOutMargin, Text(settings.keep_out_margin)}};
+      {plan::kPruneFaceLoss, fmt::format("{}", planner.prune_max_covered_faces_lost)},
+      {plan::kKeepOutMargin, fmt::format("{}", settings.keep_out_margin)}};
   return described;
 }
 

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "core/config/option_table.h"
 #include "services/planner/active_vision.h"
 
 namespace avc::planner {
@@ -21,9 +22,15 @@ struct PlanSettings {
   double keep_out_margin = 0.02;
 };
 
-// The defaults changed by `assignments`. Throws std::invalid_argument naming the setting for an
-// unknown name, a malformed value or one out of range.
-PlanSettings ParsePlanSettings(const std::vector<std::string>& assignments);
+// avc-planner's own options (--config, --set, its published configuration): the names above
+// but the envelope, which is the cell's and comes with each job.
+const config::OptionTable<PlanSettings>& PlanOptionTable();
+
+// `settings` (the planner's configuration) changed by a job's `assignments`. Throws
+// config::ConfigError naming the setting for an unknown name, a malformed value or one out of
+// range.
+PlanSettings ParsePlanSettings(const std::vector<std::string>& assignments,
+                               PlanSettings settings = {});
 
 // Algorithm 1's counts and the keep-out margin in force, by name, as text that ParsePlanSettings
 // reads back to the same values (for the scan's report).

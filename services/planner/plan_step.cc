@@ -32,9 +32,11 @@ struct Session {
 
 class PlanJobs {
  public:
+  explicit PlanJobs(PlanSettings base) : base_(std::move(base)) {}
+
   void Run(const stage::StageWork& work) {
     const std::string calibration = ReadFile(work.input_dir / kCalibrationFile);
-    const PlanSettings settings = ParsePlanSettings(work.settings);
+    const PlanSettings settings = ParsePlanSettings(work.settings, base_);
     const plan::PlanRequest request = plan::ReadPlanRequest(work.input_dir);
     PlanSession& session = SessionFor(work, calibration, settings, request);
     if (work.progress) {
@@ -71,15 +73,16 @@ class PlanJobs {
     return *sessions_.back().session;
   }
 
+  PlanSettings base_;
   std::deque<Session> sessions_;
 };
 
 }  // namespace
 
-stage::StageHandler PlanStageHandler() {
+stage::StageHandler PlanStageHandler(const PlanSettings& settings) {
   // The stage server runs one job at a time; the mutex only guards against a handler copied
   // into two servers.
-  auto jobs = std::make_shared<PlanJobs>();
+  auto jobs = std::make_shared<PlanJobs>(settings);
   auto mutex = std::make_shared<std::mutex>();
   return [jobs, mutex](const stage::StageWork& work) {
     std::lock_guard lock(*mutex);

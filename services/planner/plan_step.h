@@ -7,12 +7,14 @@
 // new one, which replays the answered views.
 
 #include "core/stage/stage_server.h"
+#include "services/planner/plan_settings.h"
 
 namespace avc::planner {
 
 inline constexpr char kCalibrationFile[] = "calibration.yaml";
 
-// The handler for a StageServer of stage "plan". It keeps the sessions of the last few scans.
-stage::StageHandler PlanStageHandler();
+// The handler for a StageServer of stage "plan", planning with `settings` (the planner's
+// configuration) changed by each job's. It keeps the sessions of the last few scans.
+stage::StageHandler PlanStageHandler(const PlanSettings& settings = {});
 
 }  // namespace avc::planner

@@ -15,6 +15,7 @@
 #include "services/clusterer/cluster_step.h"
 #include "services/surfacer/plant_base.h"
 #include "services/surfacer/surface_clusters.h"
+#include "services/surfacer/surfacer_options.h"
 
 namespace avc::surfacer {
 namespace {
@@ -43,13 +44,14 @@ nlohmann::ordered_json SurfaceSummary(const surface::SurfaceReport& made) {
 
 }  // namespace
 
-void SurfaceModel(const fs::path& model_dir, const fs::path& output_dir) {
+void SurfaceModel(const fs::path& model_dir, const fs::path& output_dir,
+                  const SurfacerOptions& given) {
   const messages::ClustersContent clusters =
       clusterer::ReadClustersMessage(model_dir / stage::kClustersMessageFile);
   // The masks the build wrote drive Phase 2's growth (a model without them: the band growth).
   const surface::SurfaceImages images = surface::ReadSurfaceImages(model_dir);
   // Plant height from the soil surface the builder found, else from the proxy's base.
-  SurfacerOptions options;
+  SurfacerOptions options = given;
   const fs::path proxy_file = model_dir / "ppr.bt";
   options.traits.ground_z =
       PlantGroundZ(builder::SoilZ(builder::ReadSoilLevel(model_dir / "soil.json")),
@@ -63,13 +65,11 @@ void SurfaceModel(const fs::path& model_dir, const fs::path& output_dir) {
   WriteFileAtomically(output_dir / "surface.json", SurfaceSummary(surface.report).dump(2) + "\n");
 }
 
-stage::StageHandler SurfaceStageHandler() {
-  return [](const stage::StageWork& work) {
-    if (!work.settings.empty()) {
-      throw std::invalid_argument(
-          fmt::format("the surface stage takes no settings; got '{}'", work.settings.front()));
-    }
-    SurfaceModel(work.input_dir, work.output_dir);
+stage::StageHandler SurfaceStageHandler(const SurfacerOptions& base) {
+  return [base](const stage::StageWork& work) {
+    SurfacerOptions options = base;
+    SurfacerOptionTable().ApplyTexts(options, work.settings, "the surface job's settings");
+    SurfaceModel(work.input_dir, work.output_dir, options);
   };
 }
 

@@ -9,13 +9,17 @@
 #include <filesystem>
 
 #include "core/stage/stage_server.h"
+#include "services/surfacer/surface_clusters.h"
 
 namespace avc::surfacer {
 
-// Throws std::runtime_error naming the file, or why no surface could be made.
-void SurfaceModel(const std::filesystem::path& model_dir, const std::filesystem::path& output_dir);
+// The traits' ground comes from the model's soil (or proxy), whatever `options` say. Throws
+// std::runtime_error naming the file, or why no surface could be made.
+void SurfaceModel(const std::filesystem::path& model_dir, const std::filesystem::path& output_dir,
+                  const SurfacerOptions& options = {});
 
-// SurfaceModel on a stage job's folders. The job takes no settings (it refuses any).
-stage::StageHandler SurfaceStageHandler();
+// SurfaceModel on a stage job's folders, with `options` changed by the job's settings
+// (surfacer_options.h).
+stage::StageHandler SurfaceStageHandler(const SurfacerOptions& options);
 
 }  // namespace avc::surfacer

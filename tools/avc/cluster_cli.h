@@ -1,23 +1,29 @@
 #pragma once
 
-// Clustering on the command line (`avc cluster`, `avc clusterer`, `avc reconstruct`): the options
-// a user may set (the data scales, measured when 0, and the main thresholds of Algorithm 2;
-// core/cluster/cluster_plant.h explains each) and the one-line summary of a result.
+// Clustering on the command line (`avc cluster`, `avc clusterer`): --config / --set over the
+// clusterer's options (services/clusterer/clusterer_options.h), shorthand flags for the main
+// ones (the data scales, measured when 0, and the main thresholds of Algorithm 2;
+// core/cluster/cluster_plant.h explains each), and the one-line summary of a result.
 
 #include <CLI/CLI.hpp>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "services/clusterer/merge_and_cluster.h"
+#include "tools/avc/config_flags.h"
 
 namespace avc::cli {
 
 struct ClusterFlags {
-  double spacing_mm = 0;
-  double noise_mm = 0;
-  double link_factor = cluster::ClusterOptions{}.link_factor;
-  int min_cluster_points = 0;
-  int merge_min_points = merge::MergeOptions{}.min_points;
+  std::optional<double> spacing_mm;       // cluster.spacing (m)
+  std::optional<double> noise_mm;         // cluster.noise (m)
+  std::optional<double> link_factor;      // cluster.link_factor
+  std::optional<int> min_cluster_points;  // cluster.min_cluster_points
+  std::optional<int> merge_min_points;    // merge.min_points
+  ConfigFlags config;
 
+  // The defaults, then --config, the shorthands given, --set. Throws config::ConfigError.
   clusterer::ClustererOptions Options() const;
 };
 

@@ -13,24 +13,25 @@
 
 #include "core/bus/service_runtime.h"
 #include "core/stage/stage_names.h"
-#include "core/stage/stage_server.h"
 #include "services/builder/build_step.h"
 #include "services/builder/builder_node.h"
+#include "services/builder/builder_options.h"
+#include "tools/avc/builder_flags.h"
 #include "tools/avc/bus_flags.h"
 #include "tools/avc/commands.h"
+#include "tools/avc/config_flags.h"
 #include "tools/avc/run_guarded.h"
+#include "tools/avc/stage_service.h"
 
 namespace avc::cli {
 namespace {
 
 struct BuilderArgs {
   builder::BuilderNodeOptions node;
-  std::string method = "patch";
   std::string box;
   std::string output;
-  int level = -1;
-  int tolerance = -1;
-  double voxel_mm = 0;
+  BuilderShorthands shorthands;
+  ConfigFlags config;
   bus::BusFlags bus;
 };
 
@@ -65,11 +66,9 @@ Eigen::AlignedBox3d ParseBox(const std::string& text) {
 
 int RunBuilder(BuilderArgs args) {
   builder::BuilderNodeOptions options = args.node;
-  options.reconstruct.method = builder::ParseMvsMethod(args.method);
-  options.reconstruct.patch.level = args.level;
-  options.reconstruct.sweep.level = args.level;
-  if (args.tolerance >= 0) options.reconstruct.proxy.background_votes_allowed = args.tolerance;
-  options.reconstruct.proxy.final_voxel_size = args.voxel_mm * 1e-3;
+  const auto& table = builder::BuilderOptionTable();
+  options.reconstruct =
+      table.Load({}, args.config.files, args.shorthands.Settings(args.config.sets));
   if (!args.box.empty()) options.box = ParseBox(args.box);
   options.output_dir = args.output;
   if (const std::string problem = options.Validate(); !problem.empty()) {
@@ -78,8 +77,9 @@ int RunBuilder(BuilderArgs args) {
   bus::ServiceRuntime runtime(options.service, args.bus);
   builder::BuilderNode node(runtime.bus(), runtime.loop(), runtime.heartbeat(), options);
   // A scan's build stage (`avc scan` sends its images and cameras as a job).
-  stage::StageServer stages(runtime.bus(), runtime.loop(), options.service, stage::kBuildStage,
-                            builder::BuildStageHandler(options.reconstruct));
+  const auto stages =
+      ServeStage(runtime, stage::kBuildStage, builder::BuildStageHandler(options.reconstruct),
+                 table.ToToml(options.reconstruct));
   return runtime.Run();
 }
 
@@ -98,28 +98,14 @@ void RegisterBuilder(CLI::App& root, int* exit_code) {
       ->add_option("--views-for-bounds", args->node.views_for_bounds,
                    "views whose masks bound the proxy's box")
       ->capture_default_str();
-  command->add_option("--method", args->method, "RUN_MVS default: patch or plane-sweep")
-      ->capture_default_str();
-  command->add_option("--box", args->box,
-                      "proxy box xmin,ymin,zmin,xmax,ymax,zmax in metres (world frame) instead "
-                      "of the automatic one");
-  command
-      ->add_option("--level", args->level,
-                   "MVS pyramid level (0 = full resolution, -1 = automatic)")
-      ->capture_default_str();
-  command
-      ->add_option("--tolerance", args->tolerance,
-                   "background votes a proxy voxel survives (-1 = default)")
-      ->capture_default_str();
-  command
-      ->add_option("--voxel-mm", args->voxel_mm,
-                   "final proxy voxel size in mm (0 = box edge / 256)")
-      ->capture_default_str();
+  AddBuilderShorthands(command, &args->shorthands, "--method");
   command
       ->add_option("--scan-id", args->node.scan_id, "names the products until RESET names another")
       ->capture_default_str();
   command->add_option("--output", args->output,
                       "also write the latest proxy (ppr.bt) and each MVS result (PLY) here");
+  AddConfigFlags(command, &args->config,
+                 builder::BuilderOptionTable().Reference(builder::ReconstructOptions{}));
   AddBusFlags(command, &args->bus);
   SetGuardedRun(command, exit_code, [args] { return RunBuilder(*args); });
 }

@@ -11,10 +11,12 @@
 #include "core/stage/stage_server.h"
 #include "services/clusterer/cluster_step.h"
 #include "services/clusterer/clusterer_node.h"
+#include "services/clusterer/clusterer_options.h"
 #include "tools/avc/bus_flags.h"
 #include "tools/avc/cluster_cli.h"
 #include "tools/avc/commands.h"
 #include "tools/avc/run_guarded.h"
+#include "tools/avc/stage_service.h"
 
 namespace avc::cli {
 namespace {
@@ -36,8 +38,9 @@ int RunClusterer(ClustererArgs args) {
   bus::ServiceRuntime runtime(options.service, args.bus);
   clusterer::ClustererNode node(runtime.bus(), runtime.loop(), runtime.heartbeat(), options);
   // A scan's cluster stage (`avc scan` sends the build's points and proxy as a job).
-  stage::StageServer stages(runtime.bus(), runtime.loop(), options.service, stage::kClusterStage,
-                            clusterer::ClusterStageHandler(options.clustering));
+  const auto stages =
+      ServeStage(runtime, stage::kClusterStage, clusterer::ClusterStageHandler(options.clustering),
+                 clusterer::ClustererOptionTable().ToToml(options.clustering));
   return runtime.Run();
 }
 

@@ -11,20 +11,25 @@
 #include "services/planner/plan_step.h"
 #include "tools/avc/bus_flags.h"
 #include "tools/avc/commands.h"
+#include "tools/avc/config_flags.h"
 #include "tools/avc/run_guarded.h"
+#include "tools/avc/stage_service.h"
 
 namespace avc::cli {
 namespace {
 
 struct PlannerArgs {
   std::string service = stage::kPlanService;
+  ConfigFlags config;
   bus::BusFlags bus;
 };
 
 int RunPlanner(const PlannerArgs& args) {
+  const auto& table = planner::PlanOptionTable();
+  const planner::PlanSettings settings = table.Load({}, args.config.files, args.config.Settings());
   bus::ServiceRuntime runtime(args.service, args.bus);
-  stage::StageServer plans(runtime.bus(), runtime.loop(), args.service, stage::kPlanStage,
-                           planner::PlanStageHandler());
+  const auto plans = ServeStage(runtime, stage::kPlanStage, planner::PlanStageHandler(settings),
+                                table.ToToml(settings));
   // Jobs queue while one is planned, so the planner takes them whenever it runs.
   runtime.heartbeat().Set(bus::ServiceState::kReady, "taking plan jobs");
   return runtime.Run();
@@ -44,6 +49,8 @@ void RegisterPlanner(CLI::App& root, int* exit_code) {
       "final plan. It plans each scan once from job to job; a resumed scan or a restarted\n"
       "planner replays the answered views (the planner is deterministic).");
   command->add_option("--service", args->service, "service name on the bus")->capture_default_str();
+  AddConfigFlags(command, &args->config,
+                 planner::PlanOptionTable().Reference(planner::PlanSettings{}));
   AddBusFlags(command, &args->bus);
   SetGuardedRun(command, exit_code, [args] { return RunPlanner(*args); });
 }

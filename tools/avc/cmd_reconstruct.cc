@@ -3,7 +3,6 @@
 // merging, clustering and surfacing, written with a scan directory's file names.
 
 #include <fmt/format.h>
-#include <fmt/ranges.h>
 #include <unistd.h>
 
 #include <iostream>
@@ -13,13 +12,17 @@
 #include "core/dataset/dataset_reader.h"
 #include "core/util/file_io.h"
 #include "services/builder/build_report.h"
-#include "services/builder/option_overrides.h"
+#include "services/builder/builder_options.h"
 #include "services/builder/reconstruction.h"
 #include "services/builder/reconstruction_output.h"
 #include "services/clusterer/cluster_step.h"
+#include "services/clusterer/clusterer_options.h"
 #include "services/surfacer/surface_step.h"
+#include "services/surfacer/surfacer_options.h"
+#include "tools/avc/builder_flags.h"
 #include "tools/avc/cluster_cli.h"
 #include "tools/avc/commands.h"
+#include "tools/avc/config_flags.h"
 #include "tools/avc/run_guarded.h"
 
 namespace avc::cli {
@@ -28,25 +31,53 @@ namespace {
 struct ReconstructArgs {
   std::string dataset;
   std::string output;
-  std::string method = "patch";
-  std::string masks = "auto";
-  int level = -1;
   int stride = 1;
-  int tolerance = -1;
-  double voxel_mm = 0;
   bool no_evaluation = false;
   bool overwrite = false;
   bool json = false;
-  std::vector<std::string> overrides;
+  BuilderShorthands shorthands;
+  ConfigFlags config;
 };
 
-segmentation::MaskMethod ParseMaskMethod(const std::string& name) {
-  for (auto method : {segmentation::MaskMethod::kAuto, segmentation::MaskMethod::kExcessGreen,
-                      segmentation::MaskMethod::kBackgroundDistance}) {
-    if (name == segmentation::MaskMethodName(method)) return method;
+// The options of the three stages this command runs, as avc-builder, avc-clusterer and
+// avc-surfacer take them.
+struct PipelineOptions {
+  builder::ReconstructOptions build;
+  clusterer::ClustererOptions cluster;
+  surfacer::SurfacerOptions surface;
+};
+
+// --config files, then the shorthand flags, then --set, each sent to the stage whose table has
+// the name (their sections do not overlap), so a scan folder's config/*.toml reproduce its
+// stages offline.
+PipelineOptions LoadPipelineOptions(const ReconstructArgs& args) {
+  std::vector<config::Assignment> all = config::ReadAssignments(args.config.files, {});
+  for (const std::string& text : args.shorthands.Settings(args.config.sets)) {
+    all.push_back(config::ParseAssignment(text, "--set"));
   }
-  throw std::invalid_argument("--masks: unknown method '" + name +
-                              "' (choose auto, excess_green or background_distance)");
+  const auto& build_table = builder::BuilderOptionTable();
+  const auto& cluster_table = clusterer::ClustererOptionTable();
+  const auto& surface_table = surfacer::SurfacerOptionTable();
+  std::vector<config::Assignment> build, cluster, surface;
+  for (const config::Assignment& assignment : all) {
+    if (build_table.Has(assignment.name)) {
+      build.push_back(assignment);
+    } else if (cluster_table.Has(assignment.name)) {
+      cluster.push_back(assignment);
+    } else if (surface_table.Has(assignment.name)) {
+      surface.push_back(assignment);
+    } else {
+      throw config::ConfigError(fmt::format(
+          "{} {}={}: no option of the builder, clusterer or surfacer has that name (--help "
+          "lists them)",
+          assignment.where, assignment.name, assignment.value));
+    }
+  }
+  PipelineOptions options;
+  build_table.Apply(options.build, build);
+  cluster_table.Apply(options.cluster, cluster);
+  surface_table.Apply(options.surface, surface);
+  return options;
 }
 
 void ShowProgress(const std::string& stage, size_t done, size_t total) {
@@ -57,14 +88,8 @@ void ShowProgress(const std::string& stage, size_t done, size_t total) {
 }
 
 int RunReconstruct(const ReconstructArgs& args) {
-  builder::ReconstructOptions options;
-  options.method = builder::ParseMvsMethod(args.method);
-  options.masks.method = ParseMaskMethod(args.masks);
-  options.patch.level = args.level;
-  options.sweep.level = args.level;
-  if (args.tolerance >= 0) options.proxy.background_votes_allowed = args.tolerance;
-  options.proxy.final_voxel_size = args.voxel_mm * 1e-3;
-  for (const std::string& assignment : args.overrides) builder::ApplyOverride(assignment, &options);
+  const PipelineOptions pipeline = LoadPipelineOptions(args);
+  const builder::ReconstructOptions& options = pipeline.build;
 
   dataset::ViewSet set = dataset::ReadDataset(args.dataset, {.stride = args.stride});
   std::cerr << fmt::format("{}: {} views ({})\n", args.dataset, set.views.size(), set.format);
@@ -83,10 +108,11 @@ int RunReconstruct(const ReconstructArgs& args) {
     // avc-clusterer and avc-surfacer run for a scan: the same files give the same bytes offline
     // and over the bus. Phase 2 grows the cells where the views' plant masks see leaf.
     try {
-      const messages::ClustersContent clusters = clusterer::ClusterModel(output, output, {});
+      const messages::ClustersContent clusters =
+          clusterer::ClusterModel(output, output, pipeline.cluster);
       std::cout << DescribeClusters(clusters) << "\n";
       written += 2;  // clusters.ply, clusters.lcm
-      surfacer::SurfaceModel(output, output);
+      surfacer::SurfaceModel(output, output, pipeline.surface);
       written += 4;  // mesh.ply, traits.csv, traits.json, surface.json
       const nlohmann::json surface = nlohmann::json::parse(ReadFile(output / "surface.json"));
       const nlohmann::json traits = nlohmann::json::parse(ReadFile(output / "traits.json"));
@@ -123,26 +149,17 @@ void RegisterReconstruct(CLI::App& root, int* exit_code) {
       ->check(CLI::ExistingDirectory);
   command->add_option("--output", args->output,
                       "folder for the results (default: <dataset>-reconstruction here)");
-  command->add_option("--mvs", args->method, "patch (PMVS-style), plane-sweep or none")
-      ->capture_default_str();
-  command->add_option("--masks", args->masks, "auto, excess_green or background_distance")
-      ->capture_default_str();
-  command
-      ->add_option("--level", args->level,
-                   "image pyramid level for MVS (0 full size, 1 half; -1 automatic)")
-      ->capture_default_str();
+  AddBuilderShorthands(command, &args->shorthands, "--mvs");
+  command->add_option("--masks", args->shorthands.masks,
+                      "plant masks: auto, excess_green or background_distance (masks.method)");
   command->add_option("--stride", args->stride, "use every Nth image")->capture_default_str();
-  command->add_option("--tolerance", args->tolerance,
-                      "background votes a proxy voxel survives (-1: the default)");
-  command->add_option("--voxel-mm", args->voxel_mm,
-                      "final proxy voxel size in mm (0: from the scene's size)");
-  command
-      ->add_option("--set", args->overrides,
-                   "override a parameter, e.g. --set patch.window=7 (repeatable; applied after "
-                   "the flags above)")
-      ->type_name("SECTION.FIELD=VALUE");
-  command->footer("Parameters --set knows: " +
-                  fmt::format("{}", fmt::join(builder::OverrideNames(), ", ")));
+  AddConfigFlags(command, &args->config, "");
+  command->footer(
+      "--config and --set take the options of avc-builder, avc-clusterer and avc-surfacer by\n"
+      "name (`avc builder --help`, `avc clusterer --help`, `avc surfacer --help` list them):\n"
+      "  avc reconstruct --dataset DIR --config SCAN/config/avc-builder.toml \\\n"
+      "      --config SCAN/config/avc-clusterer.toml --config SCAN/config/avc-surfacer.toml\n"
+      "reconstructs with a scan's configuration.");
   command->add_flag("--no-evaluation", args->no_evaluation, "skip the comparison with gt_mesh.ply");
   command->add_flag("--overwrite", args->overwrite, "replace results already in --output");
   command->add_flag("--json", args->json, "print the run's report as JSON last");

@@ -11,9 +11,12 @@
 #include "core/stage/stage_server.h"
 #include "services/surfacer/surface_step.h"
 #include "services/surfacer/surfacer_node.h"
+#include "services/surfacer/surfacer_options.h"
 #include "tools/avc/bus_flags.h"
 #include "tools/avc/commands.h"
+#include "tools/avc/config_flags.h"
 #include "tools/avc/run_guarded.h"
+#include "tools/avc/stage_service.h"
 
 namespace avc::cli {
 namespace {
@@ -21,11 +24,14 @@ namespace {
 struct SurfacerArgs {
   surfacer::SurfacerNodeOptions node;
   std::string output;
+  ConfigFlags config;
   bus::BusFlags bus;
 };
 
 int RunSurfacer(SurfacerArgs args) {
   surfacer::SurfacerNodeOptions options = args.node;
+  const auto& table = surfacer::SurfacerOptionTable();
+  options.surfacing = table.Load(options.surfacing, args.config.files, args.config.Settings());
   options.output_dir = args.output;
   if (const std::string problem = options.Validate(); !problem.empty()) {
     throw std::invalid_argument(problem);
@@ -33,8 +39,9 @@ int RunSurfacer(SurfacerArgs args) {
   bus::ServiceRuntime runtime(options.service, args.bus);
   surfacer::SurfacerNode node(runtime.bus(), runtime.loop(), runtime.heartbeat(), options);
   // A scan's surface stage (`avc scan` sends the clusters, views, masks and soil as a job).
-  stage::StageServer stages(runtime.bus(), runtime.loop(), options.service, stage::kSurfaceStage,
-                            surfacer::SurfaceStageHandler());
+  const auto stages =
+      ServeStage(runtime, stage::kSurfaceStage, surfacer::SurfaceStageHandler(options.surfacing),
+                 table.ToToml(options.surfacing));
   return runtime.Run();
 }
 
@@ -42,7 +49,6 @@ int RunSurfacer(SurfacerArgs args) {
 
 void RegisterSurfacer(CLI::App& root, int* exit_code) {
   auto args = std::make_shared<SurfacerArgs>();
-  surface::SurfaceOptions& surface = args->node.surfacing.surface;
   CLI::App* command = root.add_subcommand(
       "surfacer",
       "Run the avc-surfacer service. Triangulates every clusters product (PRODUCT/CLUSTERS)\n"
@@ -53,60 +59,40 @@ void RegisterSurfacer(CLI::App& root, int* exit_code) {
       "PRODUCT/MESH as a binary PLY (per-face label = cluster id, per-vertex colours), one\n"
       "answer per clusters product (an empty mesh when nothing could be surfaced; the reason\n"
       "is logged and in the heartbeat).");
-  command
-      ->add_option("--spacing", surface.spacing,
-                   "point spacing in m that every threshold is a multiple of (0: measured, the "
-                   "median nearest-neighbour distance)")
-      ->capture_default_str();
-  command->add_option("--alpha-factor", surface.alpha_factor, "Phase 1 alpha in spacings")
-      ->capture_default_str();
-  command
-      ->add_option("--stitch-factor", surface.stitch_factor,
-                   "Phase 4 stitch distance in spacings between cells of different clusters")
-      ->capture_default_str();
-  command
-      ->add_option("--own-cluster-stitch-factor", surface.own_cluster_stitch_factor,
-                   "Phase 4 stitch distance in spacings between cells of one cluster (0: the "
-                   "--stitch-factor)")
-      ->capture_default_str();
-  command
-      ->add_option("--stitch-link-mean-slope", surface.stitch_link_mean_slope,
-                   "stitch cells of different clusters only where they continue one surface: "
-                   "largest offset along the bisector of the normals per unit length (negative: "
-                   "off; 0.1 with --own-cluster-stitch-factor 5.25 joins a rosette's leaves "
-                   "better, see BENCHMARKS.md)")
-      ->capture_default_str();
-  command->add_flag(
-      "--stitch-over-other-cells",
-      [args](int64_t) { args->node.surfacing.surface.stitch_clear_of_other_cells = false; },
-      "let Phase 4's stitches pass over or under a third cell (refused by default: at a "
-      "rosette's centre they join two leaves across a third)");
-  command
-      ->add_option("--refine-subdivisions", surface.refine_subdivisions,
-                   "1-to-4 subdivisions of each cell before its vertices are moved onto the "
-                   "surface fitted to its points (0: same face count as the triangulation)")
-      ->capture_default_str()
-      ->check(CLI::Range(0, 3));
-  command->add_flag(
-      "--no-refine", [args](int64_t) { args->node.surfacing.surface.refine = false; },
-      "keep the piecewise-flat mesh through the points (no fitted-surface "
-      "refinement)");
+  ConfigFlags* config = &args->config;
+  AddShorthand(command, config, "--spacing", "surface.spacing",
+               "point spacing in m that every threshold is a multiple of (0: measured)");
+  AddShorthand(command, config, "--alpha-factor", "surface.alpha_factor",
+               "Phase 1 alpha in spacings");
+  AddShorthand(command, config, "--stitch-factor", "surface.stitch_factor",
+               "Phase 4 stitch distance in spacings between cells of different clusters");
+  AddShorthand(command, config, "--own-cluster-stitch-factor", "surface.own_cluster_stitch_factor",
+               "Phase 4 stitch distance in spacings between cells of one cluster");
+  AddShorthand(command, config, "--stitch-link-mean-slope", "surface.stitch_link_mean_slope",
+               "stitch cells of different clusters only where they continue one surface "
+               "(negative: off; see BENCHMARKS.md)");
+  AddShorthandSwitch(command, config, "--stitch-over-other-cells",
+                     "surface.stitch_clear_of_other_cells", "false",
+                     "let Phase 4's stitches pass over or under a third cell");
+  AddShorthand(command, config, "--refine-subdivisions", "surface.refine_subdivisions",
+               "1-to-4 subdivisions of each cell before refinement");
+  AddShorthandSwitch(command, config, "--no-refine", "surface.refine", "false",
+                     "keep the piecewise-flat mesh through the points");
   command
       ->add_option("--masks-from", args->node.images_dir,
                    "a reconstruction folder (cameras.json and masks/, as the builder writes "
                    "them) whose plant masks drive Phase 2's level sets, read again for every "
                    "clusters product (default: none, the band growth)")
       ->check(CLI::ExistingDirectory);
-  command
-      ->add_option("--max-growth-factor", surface.image_growth.max_growth_factor,
-                   "with --masks-from: how far a cell may grow, in spacings")
-      ->capture_default_str();
+  AddShorthand(command, config, "--max-growth-factor", "surface.image_growth.max_growth_factor",
+               "with --masks-from: how far a cell may grow, in spacings");
   command->add_option("--ground-z", args->node.surfacing.traits.ground_z,
                       "height of the ground in m that plant height is measured from (default: "
                       "the mesh's lowest point)");
   command->add_option("--output", args->output,
                       "also write each result to OUTPUT/<cloud id>/ as mesh.ply, traits.csv "
                       "and traits.json");
+  AddConfigFlags(command, config, surfacer::SurfacerOptionTable().Reference({}));
   AddBusFlags(command, &args->bus);
   SetGuardedRun(command, exit_code, [args] { return RunSurfacer(*args); });
 }
