@@ -90,6 +90,7 @@ std::string ReportHtml(const fs::path& scan_dir) {
   html += report::SurfaceSection(in);
   html += report::CalibrationSection(in);
   html += report::PlannerSection(in);
+  html += report::ConfigurationSection(in);
   html += report::NotesSection(in);
   html += InlineScript(ReadScript(AVC_THREE_JS_PATH, "libjs-three"));
 #ifdef AVC_ORBIT_CONTROLS_JS_PATH

@@ -232,6 +232,22 @@ std::string PlannerSection(const ReportInputs& in) {
   return html;
 }
 
+std::string ConfigurationSection(const ReportInputs& in) {
+  const json stages = in.report.value("stages", json::object());
+  if (stages.empty()) return "";
+  std::string html =
+      "<h2>Configuration</h2>\n<p>The options each stage's service ran with (`--config FILE` "
+      "takes these files).</p>\n<table>\n<tr><th>Stage</th><th>Service</th><th>SHA-256</th>"
+      "<th>File</th></tr>\n";
+  for (const auto& [stage, entry] : stages.items()) {
+    const std::string sha = entry.value("config_sha256", std::string());
+    html += "<tr>" + Cell(stage) + Cell(entry.value("service", std::string())) +
+            Cell(sha.empty() ? "not named" : sha.substr(0, 16)) +
+            Cell(entry.value("config_file", std::string("-"))) + "</tr>\n";
+  }
+  return html + "</table>\n";
+}
+
 std::string NotesSection(const ReportInputs& in) {
   std::string html = "<h2>Inputs</h2>\n";
   if (in.cluster_points) {

@@ -17,6 +17,7 @@ std::string ClustersSection(const ReportInputs& in);    // traits per cluster
 std::string SurfaceSection(const ReportInputs& in);     // what the surfacer made, its warnings
 std::string CalibrationSection(const ReportInputs& in);
 std::string PlannerSection(const ReportInputs& in);
-std::string NotesSection(const ReportInputs& in);  // inputs left out
+std::string ConfigurationSection(const ReportInputs& in);  // what each stage ran with
+std::string NotesSection(const ReportInputs& in);          // inputs left out
 
 }  // namespace avc::orchestrator::report

@@ -333,7 +333,20 @@ class ScanRun {
     add("bytes_sent", static_cast<double>(answer.bytes_sent));
     add("bytes_received", static_cast<double>(answer.bytes_received));
     add("sends", answer.sends);
+    KeepConfig(answer, stage::kPlanService, &plan_jobs_);
     return plan::ReadPlanAnswer(folder / "answer");
+  }
+
+  // The configuration a stage's service ran with: its text in config/<service>.toml, named in
+  // scan.json by its SHA-256, so the scan can be replayed or reconstructed with it.
+  void KeepConfig(const stage::StageAnswer& answer, const std::string& service,
+                  nlohmann::json* entry) {
+    (*entry)["config_sha256"] = answer.config_sha256;
+    if (answer.config_text.empty()) return;
+    const std::string file = fmt::format("config/{}.toml", service);
+    fs::create_directories(dir_ / "config");
+    WriteFileAtomically(dir_ / file, answer.config_text);
+    (*entry)["config_file"] = file;
   }
 
   // cameras.json and colmap/ list the kept views, placed by the calibration from the state the
@@ -381,14 +394,15 @@ class ScanRun {
         request, [&](const std::string& line) { Report(fmt::format("{}: {}", job.service, line)); },
         [this] { return StopRequested(); });
     stage::UnpackFiles(answer.files, into);
-    record_.options["stages"][job.stage] = {{"service", job.service},
-                                            {"request_id", answer.request_id},
-                                            {"config_sha256", answer.config_sha256},
-                                            {"stage_s", answer.stage_seconds},
-                                            {"wall_s", answer.wall_seconds},
-                                            {"bytes_sent", answer.bytes_sent},
-                                            {"bytes_received", answer.bytes_received},
-                                            {"sends", answer.sends}};
+    nlohmann::json entry = {{"service", job.service},
+                            {"request_id", answer.request_id},
+                            {"stage_s", answer.stage_seconds},
+                            {"wall_s", answer.wall_seconds},
+                            {"bytes_sent", answer.bytes_sent},
+                            {"bytes_received", answer.bytes_received},
+                            {"sends", answer.sends}};
+    KeepConfig(answer, job.service, &entry);
+    record_.options["stages"][job.stage] = entry;
     Persist();
   }
 
@@ -437,6 +451,7 @@ class ScanRun {
                        "cameras.json",
                        "colmap/",
                        kCalibrationName,
+                       "config/",
                        "plan/",
                        "model/ppr.bt",
                        "model/points.ply",

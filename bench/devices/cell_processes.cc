@@ -182,7 +182,12 @@ CellProcesses::CellProcesses(const CellProcessOptions& options)
                         "--no-usb-watch"}));
   if (options.stages) {
     for (const char* stage : {"planner", "builder", "clusterer", "surfacer"}) {
-      Start(fmt::format("avc-{}", stage), fixed(options.service_prefix, {avc, stage}));
+      const std::string name = fmt::format("avc-{}", stage);
+      std::vector<std::string> argv = {avc, stage};
+      if (const auto extra = options.service_args.find(name); extra != options.service_args.end()) {
+        argv.insert(argv.end(), extra->second.begin(), extra->second.end());
+      }
+      Start(name, fixed(options.service_prefix, argv));
     }
   }
 }

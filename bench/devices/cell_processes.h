@@ -11,6 +11,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,8 @@ struct CellProcessOptions {
   // Run the services a scan plans and reconstructs with (avc-planner, -builder, -clusterer,
   // -surfacer).
   bool stages = true;
+  // More flags for a service by name, e.g. {"avc-surfacer", {"--set", "surface.refine=false"}}.
+  std::map<std::string, std::vector<std::string>> service_args;
   // Put before the command line of the cell's processes (simulator, drivers, recorder) and of
   // the services: {"ip", "netns", "exec", NAME} runs them in a network namespace (it execs the
   // command, so the pid and the signals are the process's own).

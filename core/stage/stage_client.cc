@@ -11,6 +11,7 @@
 #include "core/stage/stage_files.h"
 #include "core/util/log.h"
 #include "core/util/session_tag.h"
+#include "core/util/sha256.h"
 
 namespace avc::stage {
 namespace {
@@ -156,6 +157,10 @@ StageAnswer StageClient::Run(const StageRequest& request,
     if (const std::string problem = RelativePathProblem(file.path); !problem.empty()) {
       throw fail(fmt::format("sent a malformed result: file '{}': {}", file.path, problem));
     }
+  }
+  if (Sha256Hex(result.config_text) != result.config_sha256 &&
+      !(result.config_text.empty() && result.config_sha256.empty())) {
+    throw fail("sent a malformed result: its configuration text does not match its SHA-256");
   }
   answer.files = std::move(result.files);
   answer.config_sha256 = result.config_sha256;

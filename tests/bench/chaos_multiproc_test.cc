@@ -44,6 +44,9 @@ class ChaosMultiproc : public ::testing::Test {
     bus.cell = cell;
     ChaosScanOptions options = testing::ShortScan(dir_.path(), name, bus);
     options.fault = fault;
+    // A surfacer configured away from its defaults: a restarted one and `avc replay` (from the
+    // CONFIG in the log) must surface with the same options.
+    options.cell.service_args["avc-surfacer"] = {"--set", "surface.final_smoothing.iterations=1"};
     return options;
   }
 

@@ -3,6 +3,9 @@
 // cameras, the points, the clusters), on a URL no cell uses, with nothing else running. The
 // services' answers must be the scan's model, byte for byte: the build's points and the surface's
 // mesh. The jobs are all a stage needs, so the log alone reproduces the scan's processing.
+// The scan's surfacer runs with a configuration of its own: the scan folder keeps each service's
+// configuration (config/<service>.toml, named in scan.json), the fresh services are started with
+// those files, and the surface made with the defaults instead differs.
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -12,6 +15,7 @@
 #include <chrono>
 #include <filesystem>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <string>
 #include <vector>
@@ -25,6 +29,7 @@
 #include "core/products/product_receiver.h"
 #include "core/stage/stage_files.h"
 #include "core/util/sha256.h"
+#include "services/surfacer/surface_step.h"
 #include "tests/bench/short_scan.h"
 #include "tests/support/test_support.h"
 
@@ -40,8 +45,24 @@ TEST(LogplayerReplay, TheScansJobsPlayedIntoFreshServicesGiveItsModel) {
                           testing::kShortScanHeight);
   bus::BusOptions cell_bus = bus::ResolveBusOptions({}, "logplayer-test");
   cell_bus.cell = "cell-log";
-  const ChaosScanResult scan = RunChaosScan(testing::ShortScan(dir.path(), "scan", cell_bus));
+  ChaosScanOptions options = testing::ShortScan(dir.path(), "scan", cell_bus);
+  options.cell.service_args["avc-surfacer"] = {"--set", "surface.final_smoothing.iterations=1"};
+  const ChaosScanResult scan = RunChaosScan(options);
   ASSERT_TRUE(scan.error.empty()) << scan.error;
+  const fs::path scan_dir = options.scan_dir;
+  const nlohmann::json stages =
+      nlohmann::json::parse(testing::ReadFile(scan_dir / "scan.json")).at("options").at("stages");
+  for (const std::string stage : {"plan", "build", "cluster", "surface"}) {
+    const nlohmann::json& entry = stages.at(stage);
+    const std::string file = entry.at("config_file").get<std::string>();
+    EXPECT_EQ(file, fmt::format("config/{}.toml", entry.at("service").get<std::string>()));
+    EXPECT_EQ(entry.at("config_sha256").get<std::string>(),
+              Sha256Hex(testing::ReadFile(scan_dir / file)))
+        << stage;
+  }
+  EXPECT_NE(testing::ReadFile(scan_dir / "config" / "avc-surfacer.toml")
+                .find("[surface.final_smoothing]\niterations = 1\n"),
+            std::string::npos);
   std::vector<fs::path> logs;
   for (const auto& entry : fs::directory_iterator(dir / "scan" / "cell" / "recordings")) {
     logs.push_back(entry.path());
@@ -57,8 +78,11 @@ TEST(LogplayerReplay, TheScansJobsPlayedIntoFreshServicesGiveItsModel) {
   const std::string avc = testing::Executable("avc").string();
   std::vector<launch::ChildProcess> services;
   for (const std::string stage : {"builder", "clusterer", "surfacer"}) {
-    services.push_back(launch::ChildProcess::Spawn(
-        {args({avc, stage}), {}, "", (dir / (stage + ".log")).string()}));
+    const fs::path config = scan_dir / "config" / fmt::format("avc-{}.toml", stage);
+    services.push_back(launch::ChildProcess::Spawn({args({avc, stage, "--config", config.string()}),
+                                                    {},
+                                                    "",
+                                                    (dir / (stage + ".log")).string()}));
   }
   bus::BusOptions replay_bus = cell_bus;
   replay_bus.control_url = replay_bus.bulk_url = url;
@@ -112,6 +136,11 @@ TEST(LogplayerReplay, TheScansJobsPlayedIntoFreshServicesGiveItsModel) {
             Sha256Hex(testing::ReadFile(model / "traits.csv")));
   player.WaitFor(milliseconds(60000));
   for (launch::ChildProcess& service : services) service.Signal(SIGTERM);
+
+  // The configuration mattered: the same clusters surfaced with the defaults give another mesh.
+  fs::create_directories(dir / "defaults");
+  surfacer::SurfaceModel(model, dir / "defaults", surfacer::SurfacerOptions{});
+  EXPECT_NE(Sha256Hex(testing::ReadFile(dir / "defaults" / "mesh.ply")), scan.mesh_sha256);
 }
 
 }  // namespace

@@ -21,6 +21,7 @@
 #include "core/stage/stage_files.h"
 #include "core/stage/stage_server.h"
 #include "core/util/file_io.h"
+#include "core/util/sha256.h"
 #include "tests/support/test_support.h"
 
 namespace avc::stage {
@@ -236,7 +237,10 @@ TEST(Stage, AJobLostInACrashIsSentAgainToTheRestartedService) {
 }
 
 // A service that answers the request with another scan's result: the client keeps nothing.
-TEST(Stage, AnAnswerForAnotherScanIsRefused) {
+// An impostor service answers every job with a result `spoil` makes wrong; the client must
+// refuse it with a failure naming the service and `expected`.
+void ExpectResultRefused(const std::function<void(avc::stage_result_t*)>& spoil,
+                         const std::string& expected) {
   Harness h;
   bus::HeartbeatPublisher beat(h.bus, h.loop, kService, milliseconds(100));
   products::SenderOptions options;
@@ -249,23 +253,56 @@ TEST(Stage, AnAnswerForAnotherScanIsRefused) {
         ASSERT_TRUE(bus::DecodeMessage(product.payload.data(), product.payload.size(), &job));
         avc::stage_result_t result{};
         result.request_id = job.request_id;
-        result.scan_id = "another-scan";
+        result.scan_id = job.scan_id;
         result.stage = job.stage;
         result.service = job.service;
         result.ok = true;
         result.files = {File("mesh.ply", "not yours")};
         result.num_files = 1;
+        spoil(&result);
         sender.SendMessage(channels::kProductStageResult, "stage/x", result);
       });
   StageClient client(h.bus, h.loop, "stage-client");
   try {
     client.Run(Request({File("a.txt", "x")}));
-    FAIL() << "accepted another scan's result";
+    FAIL() << "accepted a result that should be refused: " << expected;
   } catch (const StageFailure& failure) {
     const std::string what = failure.what();
-    EXPECT_NE(what.find("another-scan"), std::string::npos) << what;
+    EXPECT_NE(what.find(expected), std::string::npos) << what;
     EXPECT_NE(what.find(kService), std::string::npos) << what;
   }
+}
+
+TEST(Stage, AnAnswerForAnotherScanIsRefused) {
+  ExpectResultRefused([](avc::stage_result_t* result) { result->scan_id = "another-scan"; },
+                      "another-scan");
+}
+
+TEST(Stage, AnAnswerWhoseConfigurationDoesNotMatchItsNameIsRefused) {
+  ExpectResultRefused(
+      [](avc::stage_result_t* result) {
+        result->config_text = "window = 7\n";
+        result->config_sha256 = Sha256Hex("window = 5\n");
+      },
+      "configuration text does not match its SHA-256");
+}
+
+// The service's configuration in force comes back with every answer, named by its SHA-256.
+TEST(Stage, TheAnswerNamesAndCarriesTheServicesConfiguration) {
+  Harness h;
+  bus::HeartbeatPublisher beat(h.bus, h.loop, kService, milliseconds(100));
+  std::atomic<int> runs{0};
+  StageServerOptions options;
+  options.service = kService;
+  options.stage = "upper";
+  options.handler = UpperCase(&runs);
+  options.config_text = "[upper]\nalphabet = \"latin\"\n";
+  options.config_sha256 = Sha256Hex(options.config_text);
+  StageServer server(h.bus, h.loop, options);
+  StageClient client(h.bus, h.loop, "stage-client");
+  const StageAnswer answer = client.Run(Request({File("a.txt", "leaf")}));
+  EXPECT_EQ(answer.config_text, options.config_text);
+  EXPECT_EQ(answer.config_sha256, options.config_sha256);
 }
 
 TEST(Stage, AJobForAnotherStageIsRefusedWithTheReason) {

@@ -1,7 +1,9 @@
 #include "tools/avc/scan_replay_node.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <avc/config_t.hpp>
 #include <avc/scan_cameras_t.hpp>
 #include <exception>
 #include <map>
@@ -16,11 +18,15 @@
 #include "core/messages/camera_message.h"
 #include "core/products/product_archive.h"
 #include "core/products/product_receiver.h"
+#include "core/stage/stage_names.h"
 #include "core/util/file_io.h"
 #include "core/util/log.h"
 #include "services/builder/build_step.h"
+#include "services/builder/builder_options.h"
 #include "services/clusterer/cluster_step.h"
+#include "services/clusterer/clusterer_options.h"
 #include "services/surfacer/surface_step.h"
+#include "services/surfacer/surfacer_options.h"
 
 namespace avc::cli {
 namespace {
@@ -37,8 +43,15 @@ class ScanReplayNode final : public record::ReplayNode {
     cameras_subscription_ = bus.Subscribe<avc::scan_cameras_t>(
         channels::kScanCameras,
         [this](const avc::scan_cameras_t& message, const bus::RxInfo&) { cameras_ = message; });
+    config_subscription_ = bus.Subscribe<avc::config_t>(
+        channels::kConfig, [this](const avc::config_t& message, const bus::RxInfo&) {
+          configs_[message.service] = message.text;
+        });
   }
-  ~ScanReplayNode() override { bus_.Unsubscribe(cameras_subscription_); }
+  ~ScanReplayNode() override {
+    bus_.Unsubscribe(cameras_subscription_);
+    bus_.Unsubscribe(config_subscription_);
+  }
 
   void Finish() override {
     if (!cameras_) {
@@ -84,18 +97,45 @@ class ScanReplayNode final : public record::ReplayNode {
     }
     camera::WriteCamerasJson(dir_ / "cameras.json", cameras);
     const fs::path model = dir_ / "model";
-    builder::BuildModel(dir_, model, builder::ReconstructOptions{});
-    clusterer::ClusterModel(model, model, clusterer::ClustererOptions{});
-    surfacer::SurfaceModel(model, model);
+    std::vector<std::string> defaults;
+    builder::BuildModel(dir_, model,
+                        Configured(builder::BuilderOptionTable(), stage::kBuildService, &defaults));
+    clusterer::ClusterModel(
+        model, model,
+        Configured(clusterer::ClustererOptionTable(), stage::kClusterService, &defaults));
+    surfacer::SurfaceModel(
+        model, model,
+        Configured(surfacer::SurfacerOptionTable(), stage::kSurfaceService, &defaults));
     outcome_ = fmt::format("scan {}: {} kept views of {} images rebuilt into {}", cameras_->scan_id,
                            cameras.size(), images_by_name_.size(), (model / "mesh.ply").string());
+    if (!defaults.empty()) {
+      outcome_ +=
+          fmt::format(" (no CONFIG of {} in the log: default options)", fmt::join(defaults, ", "));
+    }
+  }
+
+  // The options `service` published on CONFIG while the log was recorded, so the rebuild runs
+  // with the scan's own; the defaults (named in `defaults`) when the log holds none.
+  template <typename Options>
+  Options Configured(const config::OptionTable<Options>& table, const std::string& service,
+                     std::vector<std::string>* defaults) const {
+    Options options;
+    const auto it = configs_.find(service);
+    if (it == configs_.end()) {
+      defaults->push_back(service);
+      return options;
+    }
+    table.Apply(options, config::ReadTomlAssignments(it->second, "CONFIG of " + service));
+    return options;
   }
 
   bus::Bus& bus_;
   fs::path dir_;
   products::ProductReceiver images_;
   bus::Bus::SubscriptionId cameras_subscription_ = 0;
+  bus::Bus::SubscriptionId config_subscription_ = 0;
   std::optional<avc::scan_cameras_t> cameras_;
+  std::map<std::string, std::string> configs_;  // by service: its latest CONFIG text
   std::map<std::string, std::string> images_by_name_;
   std::string outcome_;
 };
