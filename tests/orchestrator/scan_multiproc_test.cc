@@ -206,8 +206,9 @@ TEST(ScanMultiproc, PausedKilledAndResumedScanFinishesWithEveryImageOnce) {
   EXPECT_EQ(phases.back(), "REPORT");
   EXPECT_TRUE(cell.Exited().empty()) << cell.LogTails();
 
-  // One pipeline: `avc reconstruct` offline on the scan's images and cameras writes the bytes
-  // the stage services wrote over the bus.
+  // One pipeline: `avc reconstruct` offline on the scan's images and cameras, with the
+  // configuration its services ran with (config/), writes the bytes the stage services wrote
+  // over the bus.
   const fs::path offline = dir.path() / "offline";
   launch::SpawnSpec reconstruct;
   reconstruct.argv = {testing::Executable("avc").string(),
@@ -216,6 +217,11 @@ TEST(ScanMultiproc, PausedKilledAndResumedScanFinishesWithEveryImageOnce) {
                       scan_dir.string(),
                       "--output",
                       offline.string()};
+  for (const char* service : {"avc-builder", "avc-clusterer", "avc-surfacer"}) {
+    const fs::path config = scan_dir / "config" / (std::string(service) + ".toml");
+    ASSERT_TRUE(fs::exists(config)) << config;
+    reconstruct.argv.insert(reconstruct.argv.end(), {"--config", config.string()});
+  }
   reconstruct.log_file = (dir.path() / "reconstruct.log").string();
   launch::ChildProcess offline_run = launch::ChildProcess::Spawn(reconstruct);
   const auto offline_status = offline_run.WaitFor(milliseconds(240000));
