@@ -18,8 +18,10 @@
 
 #include <fmt/format.h>
 
+#include <chrono>
 #include <concepts>
 #include <functional>
+#include <optional>
 #include <set>
 #include <string>
 #include <string_view>
@@ -40,7 +42,8 @@ class OptionTable {
   explicit OptionTable(std::string owner, Check check = {})
       : owner_(std::move(owner)), check_(std::move(check)) {}
 
-  // A bool, integer, real or std::string field; `access` is a generic lambda returning a
+  // A bool, integer, real, std::string, std::chrono::milliseconds (an integer of ms) or
+  // std::optional<double> ("none" when unset) field; `access` is a generic lambda returning a
   // reference to it: [](auto& o) -> auto& { return o.section.field; }.
   template <typename Access>
   OptionTable& Add(std::string name, Access access, OptionSpec spec = {}) {
@@ -102,8 +105,11 @@ class OptionTable {
   // Every option's value as a TOML document that Load reads back to the same options.
   std::string ToToml(const Options& options) const {
     std::vector<NamedValue> values;
-    for (const Entry& entry : entries_)
-      values.push_back({entry.name, entry.get(options), entry.quoted});
+    for (const Entry& entry : entries_) {
+      std::string text = entry.get(options);
+      const bool quoted = entry.quoted || !IsTomlLiteral(text);
+      values.push_back({entry.name, std::move(text), quoted});
+    }
     return RenderToml(values);
   }
 
@@ -150,6 +156,12 @@ class OptionTable {
   }
 
   static std::string ValueText(bool value) { return value ? "true" : "false"; }
+  static std::string ValueText(std::chrono::milliseconds value) {
+    return std::to_string(value.count());
+  }
+  static std::string ValueText(const std::optional<double>& value) {
+    return value ? RealText(*value) : kNone;
+  }
   static std::string ValueText(const std::string& value) { return value; }
   template <std::integral T>
   static std::string ValueText(T value) {
@@ -164,6 +176,11 @@ class OptionTable {
   static T ParseValue(std::string_view text, const OptionSpec& spec) {
     if constexpr (std::is_same_v<T, bool>) {
       return ParseSwitch(text);
+    } else if constexpr (std::is_same_v<T, std::chrono::milliseconds>) {
+      return std::chrono::milliseconds(ParseInteger(text, spec));
+    } else if constexpr (std::is_same_v<T, std::optional<double>>) {
+      if (text == kNone) return std::optional<double>();
+      return std::optional<double>(ParseReal(text, spec));
     } else if constexpr (std::is_same_v<T, std::string>) {
       return std::string(text);
     } else if constexpr (std::is_integral_v<T>) {

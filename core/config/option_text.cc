@@ -132,6 +132,15 @@ double ParseReal(std::string_view text, const OptionSpec& spec) {
   return value;
 }
 
+bool IsTomlLiteral(std::string_view text) {
+  if (text == "true" || text == "false") return true;
+  double value = 0;
+  const char* end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, value);
+  return !text.empty() && error == std::errc() && stop == end && std::isfinite(value) &&
+         text.front() != '.' && text.back() != '.';
+}
+
 bool ParseSwitch(std::string_view text) {
   if (text == "true") return true;
   if (text == "false") return false;

@@ -49,6 +49,13 @@ std::vector<Assignment> ReadTomlFile(const std::string& path);
 std::vector<Assignment> ReadAssignments(const std::vector<std::string>& files,
                                         const std::vector<std::string>& sets);
 
+// An optional option's text when it is unset.
+inline constexpr char kNone[] = "none";
+
+// True for text TOML reads as a number or boolean (written bare), false for text that needs
+// quotes.
+bool IsTomlLiteral(std::string_view text);
+
 // Values to and from text. Every parser throws ConfigError (without a name; the table adds it).
 // Numbers are checked against [spec.min, spec.max].
 int64_t ParseInteger(std::string_view text, const OptionSpec& spec);

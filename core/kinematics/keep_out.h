@@ -5,9 +5,17 @@
 // its proxy, is plant_keep_out.h.
 
 #include <Eigen/Geometry>
+#include <optional>
 #include <string>
 
 namespace avc::kinematics {
+
+struct KeepOutCylinder;
+// "x y radius z_min z_max" (base frame, m; shortest text that reads back to the same doubles),
+// the cylinder's form in settings and configuration files.
+std::string KeepOutText(const KeepOutCylinder& cylinder);
+// That text back as the cylinder; nullopt when it is not five numbers.
+std::optional<KeepOutCylinder> ParseKeepOut(const std::string& text);
 
 struct KeepOutCylinder {
   Eigen::Vector2d centre_base = Eigen::Vector2d::Zero();  // vertical axis through (x, y), base

@@ -25,7 +25,4 @@ inline constexpr char kKeepOut[] = "keep_out";  // "x y radius z_min z_max", bas
 void AddEnvelopeSettings(const kinematics::SafetyEnvelope& driver,
                          std::map<std::string, std::string>* settings);
 
-// A keep_out value back as the cylinder; nullopt when it is not five numbers.
-std::optional<kinematics::KeepOutCylinder> ParseKeepOut(const std::string& text);
-
 }  // namespace avc::plan

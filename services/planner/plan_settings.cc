@@ -59,7 +59,7 @@ PlanSettings ParsePlanSettings(const std::vector<std::string>& assignments, Plan
     } else if (assignment.name == plan::kTableClearance) {
       table_clearance = EnvelopeLength(assignment.name, value, 0);
     } else if (assignment.name == plan::kKeepOut) {
-      keep_out = plan::ParseKeepOut(value);
+      keep_out = kinematics::ParseKeepOut(value);
       if (!keep_out) {
         throw config::ConfigError(fmt::format(
             "planner: plan setting keep_out: '{}' is not five numbers (x y radius z_min z_max)",

@@ -148,5 +148,34 @@ TEST(OptionTable, ReferenceListsEveryOptionWithDefaultUnitAndRange) {
                std::logic_error);
 }
 
+struct Timed {
+  std::chrono::milliseconds timeout{500};
+  std::optional<double> height;
+  std::string note = "12";
+};
+
+TEST(OptionTable, MillisecondsAndOptionalRealsReadBackThroughToml) {
+  OptionTable<Timed> table("avc-timed");
+  table.Add("timeout", [](auto& o) -> auto& { return o.timeout; }, {"ms", "", 1, 60000})
+      .Add("height", [](auto& o) -> auto& { return o.height; }, {"m", "", -10, 10})
+      .Add(
+          "note", [](auto& o) -> auto& { return o.note; });
+  EXPECT_EQ(table.ToToml(Timed{}), "timeout = 500\nheight = 'none'\nnote = '12'\n");
+  Timed changed;
+  table.ApplyTexts(changed, {"timeout=250", "height=-0.3"}, "--set");
+  EXPECT_EQ(changed.timeout, std::chrono::milliseconds(250));
+  EXPECT_EQ(changed.height, -0.3);
+  const auto file = std::filesystem::path(testing::TempDir()) / "timed.toml";
+  std::ofstream(file) << table.ToToml(changed);
+  const Timed read = table.Load(Timed{}, {file.string()}, {});
+  EXPECT_EQ(read.timeout, changed.timeout);
+  EXPECT_EQ(read.height, changed.height);
+  EXPECT_EQ(read.note, "12");
+  table.ApplyTexts(changed, {"height=none"}, "--set");
+  EXPECT_FALSE(changed.height.has_value());
+  EXPECT_THROW(table.ApplyTexts(changed, {"timeout=0"}, "--set"), ConfigError);
+  EXPECT_THROW(table.ApplyTexts(changed, {"height=high"}, "--set"), ConfigError);
+}
+
 }  // namespace
 }  // namespace avc::config

@@ -6,8 +6,10 @@
 #include "core/bus/service_runtime.h"
 #include "core/calibration/cell/calibration_yaml.h"
 #include "services/calibrator/calibrator_node.h"
+#include "services/calibrator/calibrator_options.h"
 #include "tools/avc/bus_flags.h"
 #include "tools/avc/commands.h"
+#include "tools/avc/config_flags.h"
 #include "tools/avc/run_guarded.h"
 
 namespace avc::cli {
@@ -15,16 +17,20 @@ namespace {
 
 struct CalibratorArgs {
   std::string calibration;
-  calibrator::CalibratorNodeOptions node;
+  ConfigFlags config;
   bus::BusFlags bus;
 };
 
-int RunCalibrator(CalibratorArgs args) {
+int RunCalibrator(const CalibratorArgs& args) {
+  const auto& table = calibrator::CalibratorOptionTable();
+  calibrator::CalibratorNodeOptions options =
+      table.Load({}, args.config.files, args.config.Settings());
   calibration::CellCalibration calibration = calibration::LoadCalibration(args.calibration);
-  args.node.source = args.calibration;
-  bus::ServiceRuntime runtime(args.node.service, args.bus);
+  options.source = args.calibration;
+  bus::ServiceRuntime runtime(options.service, args.bus);
+  runtime.PublishConfig(table.ToToml(options));
   calibrator::CalibratorNode node(runtime.bus(), runtime.loop(), runtime.heartbeat(),
-                                  std::move(calibration), args.node);
+                                  std::move(calibration), options);
   return runtime.Run();
 }
 
@@ -41,8 +47,8 @@ void RegisterCalibrator(CLI::App& root, int* exit_code) {
   command->add_option("calibration", args->calibration, "calibration.yaml")
       ->required()
       ->check(CLI::ExistingFile);
-  command->add_option("--camera-id", args->node.camera_id, "camera id stamped on cameras")
-      ->capture_default_str();
+  AddShorthand(command, &args->config, "--camera-id", "camera_id", "camera id stamped on cameras");
+  AddConfigFlags(command, &args->config, calibrator::CalibratorOptionTable().Reference({}));
   AddBusFlags(command, &args->bus);
   SetGuardedRun(command, exit_code, [args] { return RunCalibrator(*args); });
 }

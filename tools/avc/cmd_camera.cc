@@ -9,10 +9,12 @@
 
 #include "core/bus/service_runtime.h"
 #include "drivers/camera/camera_node.h"
+#include "drivers/camera/camera_service_options.h"
 #include "drivers/camera/gphoto/gphoto_camera.h"
 #include "drivers/camera/known_cameras.h"
 #include "tools/avc/bus_flags.h"
 #include "tools/avc/commands.h"
+#include "tools/avc/config_flags.h"
 #include "tools/avc/run_guarded.h"
 #include "tools/avc/usb_listing.h"
 
@@ -20,9 +22,7 @@ namespace avc::cli {
 namespace {
 
 struct CameraArgs {
-  camera_driver::GphotoCameraOptions gphoto;
-  camera_driver::CameraNodeOptions node;
-  bool no_usb_watch = false;
+  ConfigFlags config;
   bus::BusFlags bus;
 };
 
@@ -32,13 +32,17 @@ struct SnapArgs {
   std::string output;
 };
 
-int RunCamera(CameraArgs args) {
+int RunCamera(const CameraArgs& args) {
+  const auto& table = camera_driver::CameraOptionTable();
+  camera_driver::CameraServiceOptions options =
+      table.Load({}, args.config.files, args.config.Settings());
   // Hot-plug only means something for a USB camera.
-  args.node.watch_usb = !args.no_usb_watch && args.gphoto.port.rfind("ptpip:", 0) != 0;
-  bus::ServiceRuntime runtime(args.node.service, args.bus);
+  options.node.watch_usb = options.watch_usb && options.gphoto.port.rfind("ptpip:", 0) != 0;
+  bus::ServiceRuntime runtime(options.node.service, args.bus);
+  runtime.PublishConfig(table.ToToml(options));
   camera_driver::CameraNode node(runtime.bus(), runtime.loop(), runtime.heartbeat(),
-                                 std::make_unique<camera_driver::GphotoCamera>(args.gphoto),
-                                 args.node);
+                                 std::make_unique<camera_driver::GphotoCamera>(options.gphoto),
+                                 options.node);
   runtime.OnStop([&] { node.Shutdown(); });
   return runtime.Run();
 }
@@ -100,14 +104,16 @@ void RegisterCamera(CLI::App& root, int* exit_code) {
       "simulated cell: avc camera --port ptpip:127.0.0.1:15740\n"
       "Needs a writable $HOME (libgphoto2 keeps settings in ~/.gphoto). If the camera cannot be\n"
       "claimed, stop gvfs-gphoto2-volume-monitor (or any photo importer) that holds it.");
-  AddCameraSelection(*command, args->gphoto);
-  command->add_option("--camera-id", args->node.camera_id, "id stamped on every image")
-      ->capture_default_str();
-  command->add_option("--busy-retries", args->node.busy_retries, "retries of a busy camera")
-      ->capture_default_str()
-      ->check(CLI::Range(0, 50));
-  command->add_flag("--no-usb-watch", args->no_usb_watch,
-                    "do not watch USB for the camera being plugged in or out");
+  ConfigFlags* config = &args->config;
+  AddShorthand(command, config, "--port", "gphoto.port",
+               "libgphoto2 port: usb:BUS,DEV, ptpip:HOST:PORT (default: autodetect)");
+  AddShorthand(command, config, "--model", "gphoto.model",
+               "libgphoto2 model, e.g. \"Canon EOS 650D\" (default: autodetect)");
+  AddShorthand(command, config, "--camera-id", "node.camera_id", "id stamped on every image");
+  AddShorthand(command, config, "--busy-retries", "node.busy_retries", "retries of a busy camera");
+  AddShorthandSwitch(command, config, "--no-usb-watch", "watch_usb", "false",
+                     "do not watch USB for the camera being plugged in or out");
+  AddConfigFlags(command, config, camera_driver::CameraOptionTable().Reference({}));
   AddBusFlags(command, &args->bus);
   SetGuardedRun(command, exit_code, [args] { return RunCamera(*args); });
 

@@ -9,9 +9,11 @@
 
 #include "core/bus/service_runtime.h"
 #include "drivers/robot/robot_node.h"
+#include "drivers/robot/robot_options.h"
 #include "tools/avc/auth_flags.h"
 #include "tools/avc/bus_flags.h"
 #include "tools/avc/commands.h"
+#include "tools/avc/config_flags.h"
 #include "tools/avc/envelope_flags.h"
 #include "tools/avc/run_guarded.h"
 
@@ -19,18 +21,21 @@ namespace avc::cli {
 namespace {
 
 struct RobotArgs {
-  robot::RobotNodeConfig config;
   EnvelopeFlags envelope;
-  int64_t watchdog_timeout_ms = 500;
+  ConfigFlags config;
   AuthFlags auth;
   bus::BusFlags bus;
 };
 
-int RunRobot(RobotArgs args) {
-  robot::RobotNodeConfig& config = args.config;
-  ApplyEnvelopeFlags(args.envelope, &config.envelope);
-  config.watchdog_timeout = std::chrono::milliseconds(args.watchdog_timeout_ms);
+int RunRobot(const RobotArgs& args) {
+  // Files, then the envelope flags, then the other shorthands and --set.
+  std::vector<std::string> settings = EnvelopeSettings(args.envelope);
+  const std::vector<std::string> rest = args.config.Settings();
+  settings.insert(settings.end(), rest.begin(), rest.end());
+  const auto& table = robot::RobotOptionTable();
+  robot::RobotNodeConfig config = table.Load({}, args.config.files, settings);
   bus::ServiceRuntime runtime(config.service, args.bus);
+  runtime.PublishConfig(table.ToToml(config));
   config.auth = DriverAuth(args.auth, runtime.bus().cell());
   robot::RobotNode node(runtime.bus(), runtime.loop(), runtime.heartbeat(), config);
   runtime.OnStop([&] { node.Shutdown(); });
@@ -41,8 +46,6 @@ int RunRobot(RobotArgs args) {
 
 void RegisterRobot(CLI::App& root, int* exit_code) {
   auto args = std::make_shared<RobotArgs>();
-  robot::RobotNodeConfig& c = args->config;
-  args->watchdog_timeout_ms = c.watchdog_timeout.count();
   CLI::App* command = root.add_subcommand(
       "robot",
       "Run the avc-robot service: the UR5 (CB3) driver.\n"
@@ -51,25 +54,19 @@ void RegisterRobot(CLI::App& root, int* exit_code) {
       "power, brakes and protective stops go through the dashboard (29999).\n"
       "Every command but STOP and POWER_OFF must be signed with the cell's key (avc key).\n"
       "Real arm: avc robot --host 192.168.1.10   Simulated cell: avc robot --host 127.0.0.1");
-  command->add_option("--host", c.host, "controller address")->capture_default_str();
-  command->add_option("--rtde-port", c.rtde_port, "RTDE port")->capture_default_str();
-  command->add_option("--secondary-port", c.secondary_port, "secondary (script) port")
-      ->capture_default_str();
-  command->add_option("--dashboard-port", c.dashboard_port, "dashboard port")
-      ->capture_default_str();
+  ConfigFlags* config = &args->config;
+  AddShorthand(command, config, "--host", "host", "controller address");
+  AddShorthand(command, config, "--rtde-port", "rtde_port", "RTDE port");
+  AddShorthand(command, config, "--secondary-port", "secondary_port", "secondary (script) port");
+  AddShorthand(command, config, "--dashboard-port", "dashboard_port", "dashboard port");
   AddEnvelopeFlags(command, &args->envelope);
-  command->add_option("--max-joint-speed", c.envelope.max_joint_speed_rad_s, "rad/s")
-      ->capture_default_str();
-  command->add_option("--max-linear-speed", c.envelope.max_linear_speed_m_s, "m/s")
-      ->capture_default_str();
-  command
-      ->add_option("--watchdog-service", c.watchdog_service,
-                   "service whose heartbeat guards motions (\"\" disables the watchdog)")
-      ->capture_default_str();
-  command
-      ->add_option("--watchdog-timeout-ms", args->watchdog_timeout_ms,
-                   "heartbeat silence after which a guarded motion is stopped")
-      ->capture_default_str();
+  AddShorthand(command, config, "--max-joint-speed", "envelope.max_joint_speed", "rad/s");
+  AddShorthand(command, config, "--max-linear-speed", "envelope.max_linear_speed", "m/s");
+  AddShorthand(command, config, "--watchdog-service", "watchdog_service",
+               "service whose heartbeat guards motions (\"\" disables the watchdog)");
+  AddShorthand(command, config, "--watchdog-timeout-ms", "watchdog_timeout",
+               "heartbeat silence after which a guarded motion is stopped");
+  AddConfigFlags(command, config, robot::RobotOptionTable().Reference({}));
   AddDriverAuthFlags(command, &args->auth);
   AddBusFlags(command, &args->bus);
   SetGuardedRun(command, exit_code, [args] { return RunRobot(*args); });

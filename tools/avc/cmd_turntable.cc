@@ -10,11 +10,13 @@
 #include "core/bus/service_runtime.h"
 #include "core/util/log.h"
 #include "drivers/turntable/turntable_node.h"
+#include "drivers/turntable/turntable_options.h"
 #include "drivers/turntable/usb_serial_adapters.h"
 #include "sim/emulators/lt360/lt360_emulator.h"
 #include "tools/avc/auth_flags.h"
 #include "tools/avc/bus_flags.h"
 #include "tools/avc/commands.h"
+#include "tools/avc/config_flags.h"
 #include "tools/avc/run_guarded.h"
 #include "tools/avc/usb_listing.h"
 
@@ -22,12 +24,8 @@ namespace avc::cli {
 namespace {
 
 struct TurntableArgs {
-  std::string device;
-  int baud = 9600;
   std::string command_table;
-  int command_timeout_ms = 10'000;
-  double speed_deg_s = 30;
-  int poll_ms = 100;
+  ConfigFlags config;
   bool emulate = false;
   double emulate_speed_deg_s = 90;
   double emulate_sigma_deg = 0.05;
@@ -42,17 +40,18 @@ struct ListArgs {
 };
 
 int RunTurntable(const TurntableArgs& args) {
-  if (args.emulate == !args.device.empty()) {
-    throw std::invalid_argument("give exactly one of --device PATH or --emulate");
+  turntable::TurntableNodeOptions defaults;
+  // Emulated, the driver would otherwise slow the emulator down to its own default.
+  if (args.emulate) defaults.controller.default_speed_deg_s = args.emulate_speed_deg_s;
+  const auto& table = turntable::TurntableOptionTable();
+  turntable::TurntableNodeOptions options =
+      table.Load(defaults, args.config.files, args.config.Settings());
+  if (args.emulate == !options.device.empty()) {
+    throw std::invalid_argument("give exactly one of --device PATH (device) or --emulate");
   }
-  turntable::TurntableNodeOptions options;
-  options.baud = args.baud;
   if (!args.command_table.empty()) {
     options.device_options.table = turntable::LoadCommandTable(args.command_table);
   }
-  options.device_options.command_timeout = std::chrono::milliseconds(args.command_timeout_ms);
-  options.controller.default_speed_deg_s = args.speed_deg_s;
-  options.poll_period = std::chrono::milliseconds(args.poll_ms);
 
   std::unique_ptr<sim::Lt360Emulator> emulator;
   if (args.emulate) {
@@ -65,11 +64,10 @@ int RunTurntable(const TurntableArgs& args) {
     emulator = std::make_unique<sim::Lt360Emulator>(emulator_options);
     options.device = emulator->device_path();
     log::Info("LT360 emulator on {} ({} deg/s)", options.device, args.emulate_speed_deg_s);
-  } else {
-    options.device = args.device;
   }
 
   bus::ServiceRuntime runtime(options.service, args.bus);
+  runtime.PublishConfig(table.ToToml(options));
   options.auth = DriverAuth(args.auth, runtime.bus().cell());
   turntable::TurntableNode node(runtime.bus(), runtime.loop(), runtime.heartbeat(), options);
   runtime.OnStop([&] { node.Shutdown(); });
@@ -92,18 +90,16 @@ void RegisterTurntable(CLI::App& root, int* exit_code) {
       "pseudo-terminal inside the process and drives it through the real serial backend.\n"
       "Every command but STOP must be signed with the cell's key (avc key).\n"
       "Angles grow counter-clockwise seen from above.");
-  command->add_option("--device,-d", args->device, "serial device, e.g. /dev/ttyUSB0");
-  command->add_option("--baud", args->baud, "baud rate (8N1)")->capture_default_str();
+  ConfigFlags* config = &args->config;
+  AddShorthand(command, config, "--device,-d", "device", "serial device, e.g. /dev/ttyUSB0");
+  AddShorthand(command, config, "--baud", "baud", "baud rate (8N1)");
   command->add_option("--command-table", args->command_table,
                       "JSON file with the LT360 command strings (default: built-in table)");
-  command->add_option("--command-timeout-ms", args->command_timeout_ms, "reply timeout")
-      ->capture_default_str();
-  CLI::Option* speed =
-      command
-          ->add_option("--speed", args->speed_deg_s,
-                       "default speed in deg/s (with --emulate: the emulated speed)")
-          ->capture_default_str();
-  command->add_option("--poll-ms", args->poll_ms, "state poll period")->capture_default_str();
+  AddShorthand(command, config, "--command-timeout-ms", "device_options.command_timeout",
+               "reply timeout");
+  AddShorthand(command, config, "--speed", "controller.default_speed_deg_s",
+               "default speed in deg/s (with --emulate: the emulated speed)");
+  AddShorthand(command, config, "--poll-ms", "poll_period", "state poll period");
   command->add_flag("--emulate", args->emulate, "use an in-process LT360 emulator on a pty");
   command->add_option("--emulate-speed", args->emulate_speed_deg_s, "emulated speed in deg/s")
       ->capture_default_str();
@@ -117,6 +113,7 @@ void RegisterTurntable(CLI::App& root, int* exit_code) {
       ->capture_default_str();
   command->add_option("--emulate-seed", args->emulate_seed, "seed of the emulated angle error")
       ->capture_default_str();
+  AddConfigFlags(command, config, turntable::TurntableOptionTable().Reference({}));
   AddDriverAuthFlags(command, &args->auth);
   AddBusFlags(command, &args->bus);
 
@@ -126,11 +123,7 @@ void RegisterTurntable(CLI::App& root, int* exit_code) {
   list->add_option("--watch", list_args->watch_s,
                    "then report arrivals and departures for this many seconds");
   SetGuardedRun(list, exit_code, [list_args] { return RunList(*list_args); });
-  SetGuardedRun(command, exit_code, [args, speed] {
-    // Emulated, the driver would otherwise slow the emulator down to its own default.
-    if (args->emulate && speed->count() == 0) args->speed_deg_s = args->emulate_speed_deg_s;
-    return RunTurntable(*args);
-  });
+  SetGuardedRun(command, exit_code, [args] { return RunTurntable(*args); });
 }
 
 }  // namespace avc::cli

@@ -1,5 +1,8 @@
 #include "tools/avc/envelope_flags.h"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 namespace avc::cli {
 
 void AddEnvelopeFlags(CLI::App* command, EnvelopeFlags* flags) {
@@ -11,8 +14,9 @@ void AddEnvelopeFlags(CLI::App* command, EnvelopeFlags* flags) {
                    "arm stays above it by --table-clearance")
       ->group(group);
   command
-      ->add_option("--table-clearance", flags->table_clearance, "clearance kept above the bench, m")
-      ->capture_default_str()
+      ->add_option("--table-clearance", flags->table_clearance,
+                   fmt::format("clearance kept above the bench, m (default {})",
+                               kinematics::SafetyEnvelope{}.table_clearance_m))
       ->group(group);
   command
       ->add_option("--keep-out", flags->keep_out,
@@ -23,7 +27,8 @@ void AddEnvelopeFlags(CLI::App* command, EnvelopeFlags* flags) {
 
 void ApplyEnvelopeFlags(const EnvelopeFlags& flags, kinematics::SafetyEnvelope* envelope) {
   envelope->table_z_base_m = flags.table_z;
-  envelope->table_clearance_m = flags.table_clearance;
+  envelope->table_clearance_m =
+      flags.table_clearance.value_or(kinematics::SafetyEnvelope{}.table_clearance_m);
   if (flags.keep_out.size() == 5) {
     envelope->keep_out =
         kinematics::KeepOutCylinder{Eigen::Vector2d(flags.keep_out[0], flags.keep_out[1]),
@@ -32,6 +37,18 @@ void ApplyEnvelopeFlags(const EnvelopeFlags& flags, kinematics::SafetyEnvelope* 
   if (const std::string problem = envelope->Validate(); !problem.empty()) {
     throw CLI::ValidationError("safety envelope", problem);
   }
+}
+
+std::vector<std::string> EnvelopeSettings(const EnvelopeFlags& flags) {
+  std::vector<std::string> settings;
+  if (flags.table_z) settings.push_back(fmt::format("envelope.table_z={}", *flags.table_z));
+  if (flags.table_clearance) {
+    settings.push_back(fmt::format("envelope.table_clearance={}", *flags.table_clearance));
+  }
+  if (flags.keep_out.size() == 5) {
+    settings.push_back(fmt::format("envelope.keep_out={}", fmt::join(flags.keep_out, " ")));
+  }
+  return settings;
 }
 
 std::optional<kinematics::SafetyEnvelope> DriverEnvelopeOf(const EnvelopeFlags& flags) {

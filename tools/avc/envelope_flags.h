@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "core/kinematics/safety_envelope.h"
@@ -14,8 +15,8 @@ namespace avc::cli {
 
 struct EnvelopeFlags {
   std::optional<double> table_z;
-  double table_clearance = kinematics::SafetyEnvelope{}.table_clearance_m;
-  std::vector<double> keep_out;  // x y radius z_min z_max, or empty
+  std::optional<double> table_clearance;  // default: SafetyEnvelope's
+  std::vector<double> keep_out;           // x y radius z_min z_max, or empty
 };
 
 void AddEnvelopeFlags(CLI::App* command, EnvelopeFlags* flags);
@@ -23,6 +24,9 @@ void AddEnvelopeFlags(CLI::App* command, EnvelopeFlags* flags);
 // Sets envelope's table plane and keep-out cylinder from the flags (unset flags leave them
 // unset). Throws CLI::ValidationError when the result is not a usable envelope.
 void ApplyEnvelopeFlags(const EnvelopeFlags& flags, kinematics::SafetyEnvelope* envelope);
+
+// The flags given as avc-robot's options (envelope.table_z, ...; drivers/robot/robot_options.h).
+std::vector<std::string> EnvelopeSettings(const EnvelopeFlags& flags);
 
 // The flags' envelope as avc robot enforces it, or none when neither --table-z nor --keep-out
 // is given.
