@@ -1,5 +1,7 @@
 #include "bench/registry.h"
 
+#include <cstdlib>
+
 #include "bench/auth/auth_bench.h"
 #include "bench/bus/bus_bench.h"
 #include "bench/calibration/calibration_bench.h"
@@ -90,6 +92,11 @@ const Benchmark* FindBenchmark(const std::string& name) {
     if (benchmark.name == name) return &benchmark;
   }
   return nullptr;
+}
+
+std::filesystem::path SharedDataDir() {
+  if (const char* dir = std::getenv("AVC_SHARED_DATA"); dir != nullptr && *dir != '\0') return dir;
+  return std::filesystem::path("..") / "shared" / "data";
 }
 
 }  // namespace avc::bench

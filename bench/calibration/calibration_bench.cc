@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bench/calibration/cell_calibration_run.h"
+#include "bench/calibration/hand_eye/hand_eye_comparison.h"
 #include "bench/calibration/hand_eye/hand_eye_trials.h"
 #include "bench/calibration/turntable/turntable_trials.h"
 #include "bench/registry.h"
@@ -20,6 +21,7 @@ struct CalibrationBenchArgs {
   int trials = 200;
   bool skip_cell = false;
   CellCalibrationRunOptions cell;
+  std::string real_data = (SharedDataDir() / "handeye_visp" / "data-eye-to-hand").string();
   std::string work_dir;
   bool json = false;
 };
@@ -57,6 +59,17 @@ int Run(CalibrationBenchArgs args) {
   std::cout << FormatTurntableTrials(json["turntable"]) << "\n";
 
   int exit_code = 0;
+  if (!args.real_data.empty()) {
+    std::cerr << "hand-eye: the real eye-to-hand set\n";
+    try {
+      json["real_eye_to_hand"] = RunRealEyeToHand(args.real_data);
+      std::cout << FormatRealEyeToHand(json["real_eye_to_hand"]) << "\n";
+    } catch (const std::exception& error) {
+      std::cout << "the real eye-to-hand set failed: " << error.what() << "\n";
+      json["real_eye_to_hand"] = {{"error", error.what()}};
+      exit_code = 1;
+    }
+  }
   if (!args.skip_cell) {
     std::cerr << "end to end in the simulated cell\n";
     args.cell.work_dir = args.work_dir.empty()
@@ -66,6 +79,8 @@ int Run(CalibrationBenchArgs args) {
     try {
       json["cell"] = RunCellCalibration(args.cell);
       std::cout << FormatCellRun(json["cell"]);
+      std::cout << FormatHandEyeComparison(json["cell"]["hand_eye_methods"],
+                                           "Hand-eye methods on the simulated cell's detections");
     } catch (const std::exception& error) {
       std::cout << "end to end in the simulated cell failed: " << error.what() << "\n";
       json["cell"] = {{"error", error.what()}};
@@ -87,7 +102,9 @@ int RunCalibrationBenchmark(const std::vector<std::string>& arguments) {
   app.add_option("--trials", args.trials, "Monte-Carlo trials per case")
       ->capture_default_str()
       ->check(CLI::Range(1, 100000));
-  app.add_flag("--skip-cell", args.skip_cell, "only the Monte-Carlo parts");
+  app.add_flag("--skip-cell", args.skip_cell, "no end-to-end run in the simulated cell");
+  app.add_option("--real-data", args.real_data, "the ViSP eye-to-hand set (\"\": skip it)")
+      ->capture_default_str();
   app.add_option("--time-scale", args.cell.time_scale, "simulated cell clock")
       ->capture_default_str();
   app.add_option("--table-sigma", args.cell.table_sigma_deg,

@@ -6,6 +6,7 @@
 #include <iostream>
 #include <numbers>
 
+#include "bench/calibration/hand_eye/hand_eye_comparison.h"
 #include "bench/devices/cell_processes.h"
 #include "bench/summary.h"
 #include "core/bus/bus.h"
@@ -105,6 +106,11 @@ nlohmann::json RunCellCalibration(const CellCalibrationRunOptions& options) {
                              {"turntable_views", details.turntable_views},
                              {"turntable_rms_mm", r.turntable_centre_rms_mm},
                              {"rejected", r.rejected}};
+    // Every hand-eye method on the cell's own detections, as on the real set.
+    const calibration::CalibrateOptions defaults;
+    result["hand_eye_methods"] =
+        CompareHandEyeMethods(details.hand_eye_observations, details.hand_eye_board_views,
+                              calibration.intrinsics, defaults.diversity, defaults.refinement);
     result["scan"] = {{"views", centre_mm.size()},
                       {"centre_error_mm", Stats(centre_mm)},
                       {"rotation_error_deg", Stats(rotation_deg)},

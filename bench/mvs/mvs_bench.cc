@@ -26,11 +26,6 @@ struct PmvsReference {
 };
 constexpr PmvsReference kPmvs[] = {{0, 69737, 24.0, 0.904}, {1, 20909, 5.6, 0.854}};
 
-fs::path DefaultDataDir() {
-  if (const char* dir = std::getenv("AVC_SHARED_DATA"); dir != nullptr && *dir != '\0') return dir;
-  return fs::path("..") / "shared" / "data";
-}
-
 struct Row {
   MvsCase mvs_case;
   std::vector<IsolatedResult> runs;
@@ -195,7 +190,7 @@ void PrintSimTable(const std::vector<Row>& rows) {
 }  // namespace
 
 int RunMvsBenchmark(const std::vector<std::string>& arguments) {
-  std::string data_dir = DefaultDataDir().string();
+  std::string data_dir = SharedDataDir().string();
   std::vector<std::string> presets = {"rosette", "broadleaf", "strap", "bushy"};
   int repeats = 3;
   int sim_repeats = 1;

@@ -1,5 +1,6 @@
 #include "bench/calibration/hand_eye/opencv_robot_world.h"
 
+#include <Eigen/SVD>
 #include <opencv2/calib3d.hpp>
 #include <stdexcept>
 
@@ -32,8 +33,13 @@ Eigen::Isometry3d Pose(const cv::Mat& rotation, const cv::Mat& translation) {
 
 RobotWorldEstimate SolveWithOpenCvShah(
     const std::vector<calibration::hand_eye::HandEyeObservation>& observations) {
+  return SolveWithOpenCvRobotWorld(observations, cv::CALIB_ROBOT_WORLD_HAND_EYE_SHAH);
+}
+
+RobotWorldEstimate SolveWithOpenCvRobotWorld(
+    const std::vector<calibration::hand_eye::HandEyeObservation>& observations, int method) {
   if (observations.size() < 3) {
-    throw std::invalid_argument("SolveWithOpenCvShah: OpenCV needs at least 3 observations");
+    throw std::invalid_argument("calibrateRobotWorldHandEye: OpenCV needs at least 3 observations");
   }
   std::vector<cv::Mat> R_world2cam, t_world2cam, R_base2gripper, t_base2gripper;
   for (const auto& observation : observations) {
@@ -46,8 +52,43 @@ RobotWorldEstimate SolveWithOpenCvShah(
   cv::Mat R_base2world, t_base2world, R_gripper2cam, t_gripper2cam;
   cv::calibrateRobotWorldHandEye(R_world2cam, t_world2cam, R_base2gripper, t_base2gripper,
                                  R_base2world, t_base2world, R_gripper2cam, t_gripper2cam,
-                                 cv::CALIB_ROBOT_WORLD_HAND_EYE_SHAH);
+                                 static_cast<cv::RobotWorldHandEyeCalibrationMethod>(method));
   return {Pose(R_base2world, t_base2world), Pose(R_gripper2cam, t_gripper2cam)};
+}
+
+RobotWorldEstimate SolveWithOpenCvHandEye(
+    const std::vector<calibration::hand_eye::HandEyeObservation>& observations, int method) {
+  if (observations.size() < 3) {
+    throw std::invalid_argument("calibrateHandEye: OpenCV needs at least 3 observations");
+  }
+  std::vector<cv::Mat> R_gripper2base, t_gripper2base, R_target2cam, t_target2cam;
+  for (const auto& observation : observations) {
+    R_gripper2base.push_back(RotationMat(observation.T_base_flange));
+    t_gripper2base.push_back(TranslationMat(observation.T_base_flange));
+    R_target2cam.push_back(RotationMat(observation.T_cam_board));
+    t_target2cam.push_back(TranslationMat(observation.T_cam_board));
+  }
+  cv::Mat R_cam2gripper, t_cam2gripper;
+  cv::calibrateHandEye(R_gripper2base, t_gripper2base, R_target2cam, t_target2cam, R_cam2gripper,
+                       t_cam2gripper, static_cast<cv::HandEyeCalibrationMethod>(method));
+  const Eigen::Isometry3d T_flange_cam = Pose(R_cam2gripper, t_cam2gripper);
+  // Chordal mean: the rotation nearest the sum of the rotations; the mean translation.
+  Eigen::Matrix3d rotation_sum = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d translation_sum = Eigen::Vector3d::Zero();
+  for (const auto& observation : observations) {
+    const Eigen::Isometry3d T_base_board =
+        observation.T_base_flange * T_flange_cam * observation.T_cam_board;
+    rotation_sum += T_base_board.linear();
+    translation_sum += T_base_board.translation();
+  }
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(rotation_sum,
+                                              Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d sign = Eigen::Matrix3d::Identity();
+  sign(2, 2) = (svd.matrixU() * svd.matrixV().transpose()).determinant() < 0 ? -1 : 1;
+  Eigen::Isometry3d T_base_board = Eigen::Isometry3d::Identity();
+  T_base_board.linear() = svd.matrixU() * sign * svd.matrixV().transpose();
+  T_base_board.translation() = translation_sum / static_cast<double>(observations.size());
+  return {T_base_board.inverse(), T_flange_cam.inverse()};
 }
 
 }  // namespace avc::bench

@@ -21,4 +21,16 @@ struct RobotWorldEstimate {
 RobotWorldEstimate SolveWithOpenCvShah(
     const std::vector<calibration::hand_eye::HandEyeObservation>& observations);
 
+// The same with any of cv::calibrateRobotWorldHandEye's methods (SHAH, LI).
+RobotWorldEstimate SolveWithOpenCvRobotWorld(
+    const std::vector<calibration::hand_eye::HandEyeObservation>& observations, int method);
+
+// cv::calibrateHandEye (AX = XB: TSAI, PARK, HORAUD, ANDREFF, DANIILIDIS) on the same
+// observations: gripper2base = T_base_flange, target2cam = T_cam_board, giving cam2gripper =
+// T_flange_cam; the board's pose in the base, which AX = XB leaves out, is then the chordal mean
+// over the observations of T_base_flange,i T_flange_cam T_cam_board,i, as a user of that
+// function would take it. Throws std::invalid_argument for fewer than 3 observations.
+RobotWorldEstimate SolveWithOpenCvHandEye(
+    const std::vector<calibration::hand_eye::HandEyeObservation>& observations, int method);
+
 }  // namespace avc::bench

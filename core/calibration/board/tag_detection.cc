@@ -56,7 +56,7 @@ TagPose DetectTagPose(const cv::Mat& image, int id, double size,
                     id, name, tags.size()));
   const std::vector<cv::Point2f> corners(tag->corners.begin(), tag->corners.end());
   const BoardPose pose = EstimateBoardPose(TagCornerPoints(size), corners, intrinsics, name);
-  return {pose.T_cam_board, pose.rms_px};
+  return {pose.T_cam_board, pose.rms_px, tag->corners};
 }
 
 }  // namespace avc::calibration

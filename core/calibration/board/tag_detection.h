@@ -23,7 +23,8 @@ struct TagDetection {
 
 struct TagPose {
   Eigen::Isometry3d T_cam_tag = Eigen::Isometry3d::Identity();
-  double rms_px = 0;  // corner reprojection RMS
+  double rms_px = 0;                   // corner reprojection RMS
+  std::array<cv::Point2f, 4> corners;  // the detection's, TagCornerPoints order
 };
 
 // All 36h11 tags in an 8-bit grey or BGR image, sub-pixel corners, sorted by id. Throws

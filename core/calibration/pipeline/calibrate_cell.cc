@@ -93,6 +93,8 @@ CellCalibration CalibrateCell(const CalibrationDataset& dataset, const Calibrate
     residuals.view_names.push_back(d.shot->image);
   }
   details.hand_eye_views = static_cast<int>(observations.size());
+  details.hand_eye_observations = observations;
+  details.hand_eye_board_views = board_views;
   report(fmt::format("hand-eye from {} poses", observations.size()));
   const HandEyeChoice choice = ChooseHandEye(observations, board_views, calibration.intrinsics,
                                              options.diversity, options.refinement);

@@ -16,6 +16,7 @@
 #include "core/calibration/cell/cell_calibration.h"
 #include "core/calibration/hand_eye/motion_diversity.h"
 #include "core/calibration/hand_eye/reprojection_refinement.h"
+#include "core/calibration/hand_eye/robot_world_hand_eye.h"
 #include "core/calibration/pipeline/calibration_dataset.h"
 #include "core/calibration/turntable/turntable_axis_fit.h"
 
@@ -39,6 +40,9 @@ struct CalibrationDetails {
   std::string distortion_model;  // the intrinsics' terms estimated ("given": --intrinsics)
   std::string distortion_model_reason;
   std::vector<std::string> warnings;
+  // The hand-eye stage's inputs, for comparing methods on the same detections (benchmarks).
+  std::vector<hand_eye::HandEyeObservation> hand_eye_observations;
+  std::vector<hand_eye::BoardView> hand_eye_board_views;
 };
 
 using CalibrationProgress = std::function<void(const std::string& stage)>;
