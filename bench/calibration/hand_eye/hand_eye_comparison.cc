@@ -145,7 +145,7 @@ std::string FormatHandEyeComparison(const nlohmann::json& result, const std::str
     const std::string name =
         fmt::format("{} ({}){}", m["method"].get<std::string>(), m["source"].get<std::string>(),
                     m.value("written", false) ? " *written*" : "");
-    text += fmt::format("  {:<66} {:>9.3f} {:>9.2f}   {:>9.3f} {:>9.2f} {:>9.2f}\n", name,
+    text += fmt::format("  {:<66} {:>9.4f} {:>9.3f}   {:>9.4f} {:>9.3f} {:>9.3f}\n", name,
                         m["loo_rotation_deg"].get<double>(), m["loo_translation_mm"].get<double>(),
                         m["spread"]["rotation_rms_deg"].get<double>(),
                         m["spread"]["translation_rms_mm"].get<double>(),
