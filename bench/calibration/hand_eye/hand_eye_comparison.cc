@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <Eigen/SVD>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -12,6 +11,7 @@
 #include "bench/calibration/hand_eye/opencv_robot_world.h"
 #include "bench/calibration/hand_eye/visp_hand_eye_set.h"
 #include "core/calibration/pipeline/hand_eye_choice.h"
+#include "core/geometry/pose_mean.h"
 #include "core/util/upper_median.h"
 
 namespace avc::bench {
@@ -28,23 +28,15 @@ constexpr double kRadToDeg = 180.0 / M_PI;
 // largest translation (mm).
 nlohmann::json Spread(const Observations& observations, const RobotWorldEstimate& estimate) {
   std::vector<Eigen::Isometry3d> poses;
-  Eigen::Matrix3d rotation_sum = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
   for (const hand_eye::HandEyeObservation& o : observations) {
     poses.push_back(o.T_base_flange * estimate.T_cam_flange.inverse() * o.T_cam_board);
-    rotation_sum += poses.back().linear();
-    mean += poses.back().translation() / static_cast<double>(observations.size());
   }
-  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(rotation_sum,
-                                              Eigen::ComputeFullU | Eigen::ComputeFullV);
-  Eigen::Matrix3d sign = Eigen::Matrix3d::Identity();
-  sign(2, 2) = (svd.matrixU() * svd.matrixV().transpose()).determinant() < 0 ? -1 : 1;
-  const Eigen::Matrix3d mean_rotation = svd.matrixU() * sign * svd.matrixV().transpose();
+  const Eigen::Isometry3d mean = geometry::PoseMean(poses);
   double rotation_squared = 0, translation_squared = 0, largest = 0;
   for (const Eigen::Isometry3d& pose : poses) {
-    const double angle = Eigen::AngleAxisd(mean_rotation.transpose() * pose.linear()).angle();
+    const double angle = Eigen::AngleAxisd(mean.linear().transpose() * pose.linear()).angle();
     rotation_squared += angle * angle;
-    const double distance = (pose.translation() - mean).norm();
+    const double distance = (pose.translation() - mean.translation()).norm();
     translation_squared += distance * distance;
     largest = std::max(largest, distance);
   }

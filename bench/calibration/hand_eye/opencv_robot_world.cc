@@ -1,8 +1,9 @@
 #include "bench/calibration/hand_eye/opencv_robot_world.h"
 
-#include <Eigen/SVD>
 #include <opencv2/calib3d.hpp>
 #include <stdexcept>
+
+#include "core/geometry/pose_mean.h"
 
 namespace avc::bench {
 namespace {
@@ -72,23 +73,11 @@ RobotWorldEstimate SolveWithOpenCvHandEye(
   cv::calibrateHandEye(R_gripper2base, t_gripper2base, R_target2cam, t_target2cam, R_cam2gripper,
                        t_cam2gripper, static_cast<cv::HandEyeCalibrationMethod>(method));
   const Eigen::Isometry3d T_flange_cam = Pose(R_cam2gripper, t_cam2gripper);
-  // Chordal mean: the rotation nearest the sum of the rotations; the mean translation.
-  Eigen::Matrix3d rotation_sum = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d translation_sum = Eigen::Vector3d::Zero();
+  std::vector<Eigen::Isometry3d> T_base_board;
   for (const auto& observation : observations) {
-    const Eigen::Isometry3d T_base_board =
-        observation.T_base_flange * T_flange_cam * observation.T_cam_board;
-    rotation_sum += T_base_board.linear();
-    translation_sum += T_base_board.translation();
+    T_base_board.push_back(observation.T_base_flange * T_flange_cam * observation.T_cam_board);
   }
-  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(rotation_sum,
-                                              Eigen::ComputeFullU | Eigen::ComputeFullV);
-  Eigen::Matrix3d sign = Eigen::Matrix3d::Identity();
-  sign(2, 2) = (svd.matrixU() * svd.matrixV().transpose()).determinant() < 0 ? -1 : 1;
-  Eigen::Isometry3d T_base_board = Eigen::Isometry3d::Identity();
-  T_base_board.linear() = svd.matrixU() * sign * svd.matrixV().transpose();
-  T_base_board.translation() = translation_sum / static_cast<double>(observations.size());
-  return {T_base_board.inverse(), T_flange_cam.inverse()};
+  return {geometry::PoseMean(T_base_board).inverse(), T_flange_cam.inverse()};
 }
 
 }  // namespace avc::bench
