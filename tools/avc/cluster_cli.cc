@@ -9,31 +9,22 @@
 namespace avc::cli {
 
 clusterer::ClustererOptions ClusterFlags::Options() const {
-  std::vector<std::string> settings;
-  const auto metres = [](double mm) { return config::RealText(mm * 1e-3); };
-  if (merge_min_points) settings.push_back(fmt::format("merge.min_points={}", *merge_min_points));
-  if (spacing_mm) settings.push_back("cluster.spacing=" + metres(*spacing_mm));
-  if (noise_mm) settings.push_back("cluster.noise=" + metres(*noise_mm));
-  if (link_factor) settings.push_back("cluster.link_factor=" + config::RealText(*link_factor));
-  if (min_cluster_points) {
-    settings.push_back(fmt::format("cluster.min_cluster_points={}", *min_cluster_points));
-  }
-  settings.insert(settings.end(), config.sets.begin(), config.sets.end());
-  return clusterer::ClustererOptionTable().Load({}, config.files, settings);
+  return LoadOptions(clusterer::ClustererOptionTable(), config);
 }
 
 void AddClusterFlags(CLI::App* command, ClusterFlags* flags) {
-  command->add_option("--merge-min-points", flags->merge_min_points,
-                      "MVS points a proxy voxel needs to become a merged point (merge.min_points)");
-  command->add_option("--spacing-mm", flags->spacing_mm,
-                      "merged point spacing in mm, 0 measured (cluster.spacing, in m)");
-  command->add_option("--noise-mm", flags->noise_mm,
-                      "point noise in mm, 0 measured (cluster.noise, in m)");
-  command->add_option("--link-factor", flags->link_factor,
-                      "points closer than this many spacings are neighbours (cluster.link_factor)");
-  command->add_option("--min-cluster-points", flags->min_cluster_points,
-                      "smallest real cluster, 0 automatic (cluster.min_cluster_points)");
-  AddConfigFlags(command, &flags->config,
+  ConfigFlags* config = &flags->config;
+  AddShorthand(command, config, "--merge-min-points", "merge.min_points",
+               "MVS points a proxy voxel needs to become a merged point");
+  AddScaledShorthand(command, config, "--spacing-mm", "cluster.spacing", 1e-3,
+                     "merged point spacing in mm, 0 measured");
+  AddScaledShorthand(command, config, "--noise-mm", "cluster.noise", 1e-3,
+                     "point noise in mm, 0 measured");
+  AddShorthand(command, config, "--link-factor", "cluster.link_factor",
+               "points closer than this many spacings are neighbours");
+  AddShorthand(command, config, "--min-cluster-points", "cluster.min_cluster_points",
+               "smallest real cluster, 0 automatic");
+  AddConfigFlags(command, config,
                  clusterer::ClustererOptionTable().Reference(clusterer::ClustererOptions{}));
 }
 

@@ -6,7 +6,6 @@
 // core/cluster/cluster_plant.h explains each), and the one-line summary of a result.
 
 #include <CLI/CLI.hpp>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,12 +15,7 @@
 namespace avc::cli {
 
 struct ClusterFlags {
-  std::optional<double> spacing_mm;       // cluster.spacing (m)
-  std::optional<double> noise_mm;         // cluster.noise (m)
-  std::optional<double> link_factor;      // cluster.link_factor
-  std::optional<int> min_cluster_points;  // cluster.min_cluster_points
-  std::optional<int> merge_min_points;    // merge.min_points
-  ConfigFlags config;
+  ConfigFlags config;  // with the shorthands --merge-min-points, --spacing-mm, ...
 
   // The defaults, then --config, the shorthands given, --set. Throws config::ConfigError.
   clusterer::ClustererOptions Options() const;

@@ -30,7 +30,6 @@ struct BuilderArgs {
   builder::BuilderNodeOptions node;
   std::string box;
   std::string output;
-  BuilderShorthands shorthands;
   ConfigFlags config;
   bus::BusFlags bus;
 };
@@ -67,8 +66,7 @@ Eigen::AlignedBox3d ParseBox(const std::string& text) {
 int RunBuilder(BuilderArgs args) {
   builder::BuilderNodeOptions options = args.node;
   const auto& table = builder::BuilderOptionTable();
-  options.reconstruct =
-      table.Load({}, args.config.files, args.shorthands.Settings(args.config.sets));
+  options.reconstruct = LoadOptions(table, args.config);
   if (!args.box.empty()) options.box = ParseBox(args.box);
   options.output_dir = args.output;
   if (const std::string problem = options.Validate(); !problem.empty()) {
@@ -98,7 +96,7 @@ void RegisterBuilder(CLI::App& root, int* exit_code) {
       ->add_option("--views-for-bounds", args->node.views_for_bounds,
                    "views whose masks bound the proxy's box")
       ->capture_default_str();
-  AddBuilderShorthands(command, &args->shorthands, "--method");
+  AddBuilderShorthands(command, &args->config, "--method");
   command
       ->add_option("--scan-id", args->node.scan_id, "names the products until RESET names another")
       ->capture_default_str();

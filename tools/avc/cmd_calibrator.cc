@@ -23,8 +23,7 @@ struct CalibratorArgs {
 
 int RunCalibrator(const CalibratorArgs& args) {
   const auto& table = calibrator::CalibratorOptionTable();
-  calibrator::CalibratorNodeOptions options =
-      table.Load({}, args.config.files, args.config.Settings());
+  calibrator::CalibratorNodeOptions options = LoadOptions(table, args.config);
   calibration::CellCalibration calibration = calibration::LoadCalibration(args.calibration);
   options.source = args.calibration;
   bus::ServiceRuntime runtime(options.service, args.bus);

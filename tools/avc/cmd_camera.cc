@@ -34,8 +34,7 @@ struct SnapArgs {
 
 int RunCamera(const CameraArgs& args) {
   const auto& table = camera_driver::CameraOptionTable();
-  camera_driver::CameraServiceOptions options =
-      table.Load({}, args.config.files, args.config.Settings());
+  camera_driver::CameraServiceOptions options = LoadOptions(table, args.config);
   // Hot-plug only means something for a USB camera.
   options.node.watch_usb = options.watch_usb && options.gphoto.port.rfind("ptpip:", 0) != 0;
   bus::ServiceRuntime runtime(options.node.service, args.bus);

@@ -26,7 +26,7 @@ struct PlannerArgs {
 
 int RunPlanner(const PlannerArgs& args) {
   const auto& table = planner::PlanOptionTable();
-  const planner::PlanSettings settings = table.Load({}, args.config.files, args.config.Settings());
+  const planner::PlanSettings settings = LoadOptions(table, args.config);
   bus::ServiceRuntime runtime(args.service, args.bus);
   const auto plans = ServeStage(runtime, stage::kPlanStage, planner::PlanStageHandler(settings),
                                 table.ToToml(settings));

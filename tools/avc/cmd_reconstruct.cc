@@ -35,7 +35,6 @@ struct ReconstructArgs {
   bool no_evaluation = false;
   bool overwrite = false;
   bool json = false;
-  BuilderShorthands shorthands;
   ConfigFlags config;
 };
 
@@ -51,10 +50,7 @@ struct PipelineOptions {
 // the name (their sections do not overlap), so a scan folder's config/*.toml reproduce its
 // stages offline.
 PipelineOptions LoadPipelineOptions(const ReconstructArgs& args) {
-  std::vector<config::Assignment> all = config::ReadAssignments(args.config.files, {});
-  for (const std::string& text : args.shorthands.Settings(args.config.sets)) {
-    all.push_back(config::ParseAssignment(text, "--set"));
-  }
+  const std::vector<config::Assignment> all = args.config.Assignments();
   const auto& build_table = builder::BuilderOptionTable();
   const auto& cluster_table = clusterer::ClustererOptionTable();
   const auto& surface_table = surfacer::SurfacerOptionTable();
@@ -149,9 +145,9 @@ void RegisterReconstruct(CLI::App& root, int* exit_code) {
       ->check(CLI::ExistingDirectory);
   command->add_option("--output", args->output,
                       "folder for the results (default: <dataset>-reconstruction here)");
-  AddBuilderShorthands(command, &args->shorthands, "--mvs");
-  command->add_option("--masks", args->shorthands.masks,
-                      "plant masks: auto, excess_green or background_distance (masks.method)");
+  AddBuilderShorthands(command, &args->config, "--mvs");
+  AddShorthand(command, &args->config, "--masks", "masks.method",
+               "plant masks: auto, excess_green or background_distance");
   command->add_option("--stride", args->stride, "use every Nth image")->capture_default_str();
   AddConfigFlags(command, &args->config, "");
   command->footer(

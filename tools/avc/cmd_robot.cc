@@ -28,12 +28,12 @@ struct RobotArgs {
 };
 
 int RunRobot(const RobotArgs& args) {
-  // Files, then the envelope flags, then the other shorthands and --set.
-  std::vector<std::string> settings = EnvelopeSettings(args.envelope);
-  const std::vector<std::string> rest = args.config.Settings();
-  settings.insert(settings.end(), rest.begin(), rest.end());
+  // The envelope flags come with the other shorthands: after the files, before --set.
+  ConfigFlags flags = args.config;
+  const std::vector<config::Assignment> envelope = EnvelopeSettings(args.envelope);
+  flags.shorthands.insert(flags.shorthands.begin(), envelope.begin(), envelope.end());
   const auto& table = robot::RobotOptionTable();
-  robot::RobotNodeConfig config = table.Load({}, args.config.files, settings);
+  robot::RobotNodeConfig config = LoadOptions(table, flags);
   bus::ServiceRuntime runtime(config.service, args.bus);
   runtime.PublishConfig(table.ToToml(config));
   config.auth = DriverAuth(args.auth, runtime.bus().cell());

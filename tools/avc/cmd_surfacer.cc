@@ -31,7 +31,7 @@ struct SurfacerArgs {
 int RunSurfacer(SurfacerArgs args) {
   surfacer::SurfacerNodeOptions options = args.node;
   const auto& table = surfacer::SurfacerOptionTable();
-  options.surfacing = table.Load(options.surfacing, args.config.files, args.config.Settings());
+  options.surfacing = LoadOptions(table, args.config, options.surfacing);
   options.output_dir = args.output;
   if (const std::string problem = options.Validate(); !problem.empty()) {
     throw std::invalid_argument(problem);

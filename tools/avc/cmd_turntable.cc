@@ -44,8 +44,7 @@ int RunTurntable(const TurntableArgs& args) {
   // Emulated, the driver would otherwise slow the emulator down to its own default.
   if (args.emulate) defaults.controller.default_speed_deg_s = args.emulate_speed_deg_s;
   const auto& table = turntable::TurntableOptionTable();
-  turntable::TurntableNodeOptions options =
-      table.Load(defaults, args.config.files, args.config.Settings());
+  turntable::TurntableNodeOptions options = LoadOptions(table, args.config, defaults);
   if (args.emulate == !options.device.empty()) {
     throw std::invalid_argument("give exactly one of --device PATH (device) or --emulate");
   }

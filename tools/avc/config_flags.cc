@@ -1,11 +1,20 @@
 #include "tools/avc/config_flags.h"
 
-namespace avc::cli {
+#include "core/config/option_text.h"
 
-std::vector<std::string> ConfigFlags::Settings() const {
-  std::vector<std::string> settings = shorthands;
-  settings.insert(settings.end(), sets.begin(), sets.end());
-  return settings;
+namespace avc::cli {
+namespace {
+
+// "--device,-d" -> "--device": how an error names the flag.
+std::string FlagName(const std::string& flag) { return flag.substr(0, flag.find(',')); }
+
+}  // namespace
+
+std::vector<config::Assignment> ConfigFlags::Assignments() const {
+  std::vector<config::Assignment> all = config::ReadAssignments(files, {});
+  all.insert(all.end(), shorthands.begin(), shorthands.end());
+  for (config::Assignment& set : config::ReadAssignments({}, sets)) all.push_back(std::move(set));
+  return all;
 }
 
 void AddConfigFlags(CLI::App* command, ConfigFlags* flags, const std::string& reference) {
@@ -26,8 +35,8 @@ void AddShorthand(CLI::App* command, ConfigFlags* flags, const std::string& flag
   command
       ->add_option_function<std::string>(
           flag,
-          [flags, option](const std::string& value) {
-            flags->shorthands.push_back(option + "=" + value);
+          [flags, name = FlagName(flag), option](const std::string& value) {
+            flags->shorthands.push_back({option, value, name});
           },
           help + " (" + option + ")")
       ->type_name("VALUE");
@@ -37,8 +46,37 @@ void AddShorthandSwitch(CLI::App* command, ConfigFlags* flags, const std::string
                         const std::string& option, const std::string& value,
                         const std::string& help) {
   command->add_flag_callback(
-      flag, [flags, option, value] { flags->shorthands.push_back(option + "=" + value); },
+      flag,
+      [flags, name = FlagName(flag), option, value] {
+        flags->shorthands.push_back({option, value, name});
+      },
       help + " (" + option + "=" + value + ")");
+}
+
+void AddScaledShorthand(CLI::App* command, ConfigFlags* flags, const std::string& flag,
+                        const std::string& option, double scale, const std::string& help) {
+  command->add_option_function<double>(
+      flag,
+      [flags, name = FlagName(flag), option, scale](double value) {
+        flags->shorthands.push_back({option, config::RealText(value * scale), name});
+      },
+      help + " (" + option + ")");
+}
+
+void AddShorthandForAll(CLI::App* command, ConfigFlags* flags, const std::string& flag,
+                        const std::vector<std::string>& options, const std::string& help) {
+  std::string names;
+  for (const std::string& option : options) names += (names.empty() ? "" : " and ") + option;
+  command
+      ->add_option_function<std::string>(
+          flag,
+          [flags, name = FlagName(flag), options](const std::string& value) {
+            for (const std::string& option : options) {
+              flags->shorthands.push_back({option, value, name});
+            }
+          },
+          help + " (" + names + ")")
+      ->type_name("VALUE");
 }
 
 }  // namespace avc::cli

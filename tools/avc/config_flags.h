@@ -7,16 +7,28 @@
 #include <string>
 #include <vector>
 
+#include "core/config/option_table.h"
+
 namespace avc::cli {
 
 struct ConfigFlags {
-  std::vector<std::string> files;       // --config, in order
-  std::vector<std::string> shorthands;  // from AddShorthand flags, as assignments
+  std::vector<std::string> files;              // --config, in order
+  std::vector<config::Assignment> shorthands;  // from the shorthand flags, named by flag
   std::vector<std::string> sets;
 
-  // What applies over --config: the shorthand flags given, then --set.
-  std::vector<std::string> Settings() const;
+  // Everything in the order it applies: the files, the shorthand flags given, then --set.
+  // Throws config::ConfigError for a file that cannot be read or a malformed --set.
+  std::vector<config::Assignment> Assignments() const;
 };
+
+// The table's defaults changed by the flags; throws config::ConfigError naming what is wrong
+// and where (file and line, flag, or --set).
+template <typename Options>
+Options LoadOptions(const config::OptionTable<Options>& table, const ConfigFlags& flags,
+                    Options defaults = {}) {
+  table.Apply(defaults, flags.Assignments());
+  return defaults;
+}
 
 // `reference` is the table's Reference(defaults).
 void AddConfigFlags(CLI::App* command, ConfigFlags* flags, const std::string& reference);
@@ -24,6 +36,12 @@ void AddConfigFlags(CLI::App* command, ConfigFlags* flags, const std::string& re
 // A flag standing for one option: `--flag VALUE` is `--set option=VALUE`, checked by the table.
 void AddShorthand(CLI::App* command, ConfigFlags* flags, const std::string& flag,
                   const std::string& option, const std::string& help);
+// A flag in other units than its option: `--flag VALUE` is `option=VALUE*scale` (a mm flag for
+// an option in m), and a flag standing for several options takes `options`.
+void AddScaledShorthand(CLI::App* command, ConfigFlags* flags, const std::string& flag,
+                        const std::string& option, double scale, const std::string& help);
+void AddShorthandForAll(CLI::App* command, ConfigFlags* flags, const std::string& flag,
+                        const std::vector<std::string>& options, const std::string& help);
 // A switch standing for `--set option=value`.
 void AddShorthandSwitch(CLI::App* command, ConfigFlags* flags, const std::string& flag,
                         const std::string& option, const std::string& value,

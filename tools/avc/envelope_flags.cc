@@ -39,14 +39,18 @@ void ApplyEnvelopeFlags(const EnvelopeFlags& flags, kinematics::SafetyEnvelope* 
   }
 }
 
-std::vector<std::string> EnvelopeSettings(const EnvelopeFlags& flags) {
-  std::vector<std::string> settings;
-  if (flags.table_z) settings.push_back(fmt::format("envelope.table_z={}", *flags.table_z));
+std::vector<config::Assignment> EnvelopeSettings(const EnvelopeFlags& flags) {
+  std::vector<config::Assignment> settings;
+  if (flags.table_z) {
+    settings.push_back({"envelope.table_z", fmt::format("{}", *flags.table_z), "--table-z"});
+  }
   if (flags.table_clearance) {
-    settings.push_back(fmt::format("envelope.table_clearance={}", *flags.table_clearance));
+    settings.push_back({"envelope.table_clearance", fmt::format("{}", *flags.table_clearance),
+                        "--table-clearance"});
   }
   if (flags.keep_out.size() == 5) {
-    settings.push_back(fmt::format("envelope.keep_out={}", fmt::join(flags.keep_out, " ")));
+    settings.push_back(
+        {"envelope.keep_out", fmt::format("{}", fmt::join(flags.keep_out, " ")), "--keep-out"});
   }
   return settings;
 }

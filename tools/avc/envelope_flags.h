@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/config/option_text.h"
 #include "core/kinematics/safety_envelope.h"
 
 namespace avc::cli {
@@ -26,7 +27,7 @@ void AddEnvelopeFlags(CLI::App* command, EnvelopeFlags* flags);
 void ApplyEnvelopeFlags(const EnvelopeFlags& flags, kinematics::SafetyEnvelope* envelope);
 
 // The flags given as avc-robot's options (envelope.table_z, ...; drivers/robot/robot_options.h).
-std::vector<std::string> EnvelopeSettings(const EnvelopeFlags& flags);
+std::vector<config::Assignment> EnvelopeSettings(const EnvelopeFlags& flags);
 
 // The flags' envelope as avc robot enforces it, or none when neither --table-z nor --keep-out
 // is given.
