@@ -40,6 +40,7 @@ std::string SenderOptions::Validate() const {
   if (max_attempts < 1) return "max_attempts must be >= 1";
   if (max_bytes_per_second <= 0) return "max_bytes_per_second must be positive";
   if (max_in_flight_bytes == 0) return "max_in_flight_bytes must be positive";
+  if (max_chunk_bytes != 0 && max_chunk_bytes < 4096) return "max_chunk_bytes must be >= 4096";
   return "";
 }
 
@@ -88,7 +89,9 @@ std::string ProductSender::Send(std::string_view channel, std::string name,
     product.product_id =
         fmt::format("{}/{}/{}", bus_.options().source, incarnation_, next_number_++);
     if (chunk_payload_bytes_ == 0) {
-      chunk_payload_bytes_ = ChunkPayloadBytes(bus_.options().max_message_bytes, product);
+      const size_t cap = bus_.options().max_message_bytes;
+      chunk_payload_bytes_ = ChunkPayloadBytes(
+          options_.max_chunk_bytes == 0 ? cap : std::min(cap, options_.max_chunk_bytes), product);
     }
     const size_t size = product.payload.size();
     outgoing->chunk_count = static_cast<int32_t>(

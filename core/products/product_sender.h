@@ -31,6 +31,9 @@ struct SenderOptions {
   int max_attempts = 12;                           // transmissions before giving up
   double max_bytes_per_second = 200e6;             // pacing: a flat-out sender overruns receivers
   size_t max_in_flight_bytes = 48'000'000;         // unacknowledged bytes before Send() queues
+  // Largest chunk message; 0: the bus's cap. Smaller chunks fit receive buffers smaller than a
+  // product (a lost fragment then costs one chunk) and keep a recorded log playable.
+  size_t max_chunk_bytes = 0;
 
   std::string Validate() const;
 };

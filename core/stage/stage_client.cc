@@ -51,6 +51,7 @@ products::ProductSender& StageClient::SenderFor(const std::string& service) {
   if (!sender) {
     products::SenderOptions options;
     options.required_receivers = {service};
+    options.max_chunk_bytes = kStageChunkBytes;
     sender = std::make_unique<products::ProductSender>(bus_, loop_, options);
   }
   return *sender;

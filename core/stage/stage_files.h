@@ -11,6 +11,11 @@
 
 namespace avc::stage {
 
+// A stage job or result of tens of megabytes goes in chunks of this size: a receive buffer of a few
+// megabytes holds one, a lost fragment costs one chunk, and a recording of the scan plays back
+// into fresh services (lcm-logplayer cannot resend what a socket dropped).
+inline constexpr size_t kStageChunkBytes = 1'000'000;
+
 // The named files under `root` (relative paths), in that order. Throws std::runtime_error naming
 // a file that cannot be read.
 std::vector<avc::file_t> PackFiles(const std::filesystem::path& root,

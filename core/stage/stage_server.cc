@@ -182,6 +182,7 @@ products::ProductSender& StageServer::SenderFor(const std::string& reply_to) {
   if (!sender) {
     products::SenderOptions options = options_.products;
     options.required_receivers = {reply_to};
+    if (options.max_chunk_bytes == 0) options.max_chunk_bytes = kStageChunkBytes;
     sender = std::make_unique<products::ProductSender>(bus_, loop_, options);
   }
   return *sender;

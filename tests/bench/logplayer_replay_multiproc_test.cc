@@ -110,20 +110,32 @@ TEST(LogplayerReplay, TheScansJobsPlayedIntoFreshServicesGiveItsModel) {
   ASSERT_TRUE(loop.RunUntil([&] { return ready.size() == 3; }, milliseconds(20000)))
       << ready.size() << " services READY";
 
-  launch::ChildProcess player = launch::ChildProcess::Spawn(
-      {{"lcm-logplayer", "-e", fmt::format("^{}/PRODUCT/STAGE_JOB$", cell_bus.cell), "-l", url,
-        logs[0].string()},
-       {},
-       "",
-       (dir / "lcm-logplayer.log").string()});
-  const bool answered = loop.RunUntil(
-      [&] {
-        return results.count("build") && results.count("cluster") && results.count("surface");
-      },
-      milliseconds(180000));
-  ASSERT_TRUE(answered) << results.size() << " of 3 stages answered\n"
-                        << testing::ReadFile(dir / "lcm-logplayer.log")
-                        << testing::ReadFile(dir / "builder.log");
+  // A log cannot resend what a service's socket dropped, and played at recorded speed the build
+  // job's 36 MB come in the bursts the scan's sender paced for a receiver that acknowledges: play
+  // the log again, slower each time (at most 3 passes, at 1x, 0.5x and 0.25x). A service answers
+  // a job it already has from memory, so a further pass changes nothing else.
+  const auto all_answered = [&] {
+    return results.count("build") && results.count("cluster") && results.count("surface");
+  };
+  int passes = 0;
+  for (; passes < 3 && !all_answered(); ++passes) {
+    launch::ChildProcess player = launch::ChildProcess::Spawn(
+        {{"lcm-logplayer", "-s", fmt::format("{}", 1.0 / (1 << passes)), "-e",
+          fmt::format("^{}/PRODUCT/STAGE_JOB$", cell_bus.cell), "-l", url, logs[0].string()},
+         {},
+         "",
+         (dir / fmt::format("lcm-logplayer-{}.log", passes)).string()});
+    loop.RunUntil([&] { return all_answered() || !player.running(); }, milliseconds(240000));
+    // The last job's stage may still be computing when the log ends.
+    loop.RunUntil(all_answered, milliseconds(60000));
+    player.WaitFor(milliseconds(60000));
+  }
+  ASSERT_TRUE(all_answered()) << results.size() << " of 3 stages answered after " << passes
+                              << " passes\n"
+                              << testing::ReadFile(dir / "builder.log")
+                              << testing::ReadFile(dir / "clusterer.log")
+                              << testing::ReadFile(dir / "surfacer.log");
+  std::printf("[ measured ] answered after %d pass(es) of the log\n", passes);
   for (const auto& [stage, result] : results)
     EXPECT_TRUE(result.ok) << stage << ": " << result.error;
   stage::UnpackFiles(results.at("build").files, dir / "replayed");
@@ -134,7 +146,6 @@ TEST(LogplayerReplay, TheScansJobsPlayedIntoFreshServicesGiveItsModel) {
   EXPECT_EQ(Sha256Hex(testing::ReadFile(dir / "replayed" / "mesh.ply")), scan.mesh_sha256);
   EXPECT_EQ(Sha256Hex(testing::ReadFile(dir / "replayed" / "traits.csv")),
             Sha256Hex(testing::ReadFile(model / "traits.csv")));
-  player.WaitFor(milliseconds(60000));
   for (launch::ChildProcess& service : services) service.Signal(SIGTERM);
 
   // The configuration mattered: the same clusters surfaced with the defaults give another mesh.
