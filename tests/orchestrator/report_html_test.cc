@@ -54,6 +54,12 @@ TEST(ReportHtml, ShowsTheScanItsFiguresViewsAndClusters) {
   EXPECT_NE(html.find("<td class=\"num\">30.50</td>"), std::string::npos);  // BUILD seconds
   EXPECT_NE(html.find("<li>patch 3 seen by 1 view</li>"), std::string::npos);
   EXPECT_NE(html.find("cameras (2)"), std::string::npos);
+  // The configuration each stage ran with: its SHA-256's start and file, or that none was named.
+  EXPECT_NE(html.find("<tr><td>build</td><td>avc-builder</td><td>0123456789abcdef</td>"
+                      "<td>config/avc-builder.toml</td></tr>"),
+            std::string::npos);
+  EXPECT_NE(html.find("<tr><td>surface</td><td>avc-surfacer</td><td>not named</td><td>-</td></tr>"),
+            std::string::npos);
   // The surfacer's account: counts, area after each phase, warnings.
   EXPECT_NE(html.find("9 clusters of 2900 points (4 left out"), std::string::npos);
   EXPECT_NE(html.find("77 stitch faces joined them into 2 connected pieces"), std::string::npos);
