@@ -4,11 +4,15 @@
 
 #include <Eigen/Geometry>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <sstream>
 #include <stdexcept>
 
 #include "core/camera/camera_io.h"
+#include "core/dataset/exact_pose.h"
+#include "core/dataset/romi_index.h"
+#include "core/dataset/world_up.h"
 
 namespace avc::dataset {
 namespace fs = std::filesystem;
@@ -81,13 +85,9 @@ std::vector<camera::NamedCamera> ReadMiddleburyParameters(const fs::path& file) 
     k.cy = v[5];
     Eigen::Matrix3d r;
     r << v[9], v[10], v[11], v[12], v[13], v[14], v[15], v[16], v[17];
-    if ((r.transpose() * r - Eigen::Matrix3d::Identity()).norm() > 1e-5 || r.determinant() < 0) {
-      Fail(file, fmt::format("line {}: R is not a rotation", line_number));
-    }
-    // Re-orthonormalise the printed digits so that the pose is an exact isometry.
-    const Eigen::Quaterniond q(r);
-    named.camera.T_cam_world.linear() = q.normalized().toRotationMatrix();
-    named.camera.T_cam_world.translation() = Eigen::Vector3d(v[18], v[19], v[20]);
+    const auto pose = ExactPose(r, Eigen::Vector3d(v[18], v[19], v[20]));
+    if (!pose) Fail(file, fmt::format("line {}: R is not a rotation", line_number));
+    named.camera.T_cam_world = *pose;
     cameras.push_back(std::move(named));
   }
   if (cameras.size() != count) {
@@ -101,6 +101,54 @@ cv::Mat ReadImage(const fs::path& path, int flags, const std::string& what) {
   cv::Mat image = cv::imread(path.string(), flags);
   if (image.empty()) Fail(path, what + " cannot be decoded");
   return image;
+}
+
+// The unit cameras.json declares ("units": "m" or "mm"), or kAuto when it declares none.
+LengthUnit DeclaredScanUnit(const fs::path& cameras_json) {
+  std::ifstream in(cameras_json);
+  const nlohmann::json json = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (json.is_discarded() || !json.is_object() || !json.contains("units")) return LengthUnit::kAuto;
+  try {
+    return ParseLengthUnit(json["units"].get<std::string>());
+  } catch (const std::exception& error) {
+    Fail(cameras_json, fmt::format("\"units\": {}", error.what()));
+  }
+}
+
+// Decides the dataset's unit and converts the cameras to metres (x_cam = R X + t: scaling the
+// world scales t).
+UnitDecision ConvertToMetres(std::vector<camera::NamedCamera>& named, LengthUnit requested,
+                             LengthUnit declared, const std::string& declared_by,
+                             const fs::path& dir) {
+  std::vector<camera::Camera> cameras;
+  for (const auto& entry : named) {
+    camera::Camera camera = entry.camera;
+    // Middlebury gives no image size; any size will do to locate the scene.
+    if (camera.intrinsics.width == 0) camera.intrinsics.width = 2 * camera.intrinsics.cx + 1;
+    if (camera.intrinsics.height == 0) camera.intrinsics.height = 2 * camera.intrinsics.cy + 1;
+    cameras.push_back(camera);
+  }
+  const UnitDecision decision =
+      DecideLengthUnit(cameras, requested, declared, declared_by, dir.string());
+  const double scale = MetresPerUnit(decision.unit);
+  for (auto& entry : named) entry.camera.T_cam_world.translation() *= scale;
+  return decision;
+}
+
+// Turns the world so that the cameras' up is +z, recording the turn in the set.
+void TurnUpright(std::vector<camera::NamedCamera>& named, ViewSet& set) {
+  std::vector<camera::Camera> cameras;
+  for (const auto& entry : named) cameras.push_back(entry.camera);
+  const std::optional<UprightTurn> turn = FindUprightTurn(cameras);
+  if (!turn) return;
+  // x_cam = R X + t with X = Q^T X': the pose becomes [R Q^T | t].
+  for (auto& entry : named) {
+    entry.camera.T_cam_world.linear() =
+        entry.camera.T_cam_world.linear() * turn->rotation.transpose();
+  }
+  set.world_rotation = turn->rotation;
+  set.orientation_note =
+      fmt::format("the cameras' up is the file's {} axis: turned to +z", turn->from_axis);
 }
 
 fs::path MaskPath(const fs::path& masks_dir, const std::string& image_name) {
@@ -118,6 +166,7 @@ std::string DetectDatasetFormat(const fs::path& dir) {
   if (fs::is_regular_file(dir / "cameras.json")) return "scan";
   if (!ColmapModelDir(dir).empty()) return "colmap";
   if (!MiddleburyParameterFiles(dir).empty()) return "middlebury";
+  if (IsRomiScan(dir)) return "romi";
   return {};
 }
 
@@ -129,10 +178,14 @@ ViewSet ReadDataset(const fs::path& dir, const ReadOptions& options) {
   set.format = DetectDatasetFormat(dir);
   std::vector<camera::NamedCamera> cameras;
   fs::path images_dir = dir;
+  LengthUnit declared = LengthUnit::kAuto;
+  std::string declared_by;
   if (set.format == "scan") {
     cameras = camera::ReadCamerasJson(dir / "cameras.json");
     images_dir = dir / "images";
     if (fs::is_regular_file(dir / "gt_mesh.ply")) set.ground_truth_mesh = dir / "gt_mesh.ply";
+    declared = DeclaredScanUnit(dir / "cameras.json");
+    declared_by = "cameras.json";
   } else if (set.format == "colmap") {
     const fs::path model = ColmapModelDir(dir);
     cameras = camera::ReadColmapText(model);
@@ -143,12 +196,22 @@ ViewSet ReadDataset(const fs::path& dir, const ReadOptions& options) {
       Fail(dir, fmt::format("holds {} *_par.txt files; keep one per directory", files.size()));
     }
     cameras = ReadMiddleburyParameters(files.front());
+  } else if (set.format == "romi") {
+    cameras = ReadRomiIndex(dir / "index.json");
+    images_dir = dir / "undist";
+    declared = LengthUnit::kMillimetre;
+    declared_by = "the ROMI layout (index.json, millimetres)";
   } else {
     Fail(dir,
-         "no cameras.json (scan directory), cameras.txt + images.txt (COLMAP text model) or "
-         "*_par.txt (Middlebury) found");
+         "no cameras.json (scan directory), cameras.txt + images.txt (COLMAP text model), "
+         "*_par.txt (Middlebury) or index.json (ROMI scan) found");
   }
   if (cameras.empty()) Fail(dir, "lists no images");
+  const UnitDecision unit = ConvertToMetres(cameras, options.units, declared, declared_by, dir);
+  set.unit = LengthUnitName(unit.unit);
+  set.metres_per_unit = MetresPerUnit(unit.unit);
+  set.unit_note = unit.how;
+  if (options.upright) TurnUpright(cameras, set);
   const fs::path masks_dir = dir / "masks";
   for (size_t i = 0; i < cameras.size(); i += static_cast<size_t>(options.stride)) {
     View view;
@@ -156,7 +219,7 @@ ViewSet ReadDataset(const fs::path& dir, const ReadOptions& options) {
     view.camera = cameras[i].camera;
     view.image = ReadImage(images_dir / view.name, cv::IMREAD_COLOR, "image");
     auto& k = view.camera.intrinsics;
-    if (k.width == 0 && k.height == 0) {  // Middlebury gives no size: the image's own
+    if (k.width == 0 && k.height == 0) {  // Middlebury and ROMI give no size: the image's own
       k.width = view.image.cols;
       k.height = view.image.rows;
     }

@@ -4,6 +4,7 @@
 // optionally which pixels are plant. Every importer (COLMAP text, Middlebury, scan directories)
 // and the live builder produce these; segmentation fills `mask`, carving and MVS read it.
 
+#include <Eigen/Core>
 #include <filesystem>
 #include <opencv2/core/mat.hpp>
 #include <string>
@@ -23,8 +24,20 @@ struct View {
 struct ViewSet {
   std::vector<View> views;
   std::filesystem::path directory;  // where the set was read from (empty when built live)
-  std::string format;               // "colmap", "middlebury", "scan" or "live"
-  // A simulated scan's ground truth (gt_mesh.ply), when the directory has one; else empty.
+  std::string format;               // "colmap", "middlebury", "scan", "romi" or "live"
+  // The unit the dataset's files are in (cameras are converted to metres on reading), and one
+  // line saying how it was decided.
+  std::string unit = "m";
+  double metres_per_unit = 1.0;
+  std::string unit_note;
+  // The turn the import gave the world so that z is up (core/dataset/world_up.h): a point of the
+  // dataset's files is at world_rotation * metres_per_unit * X in the views' world.
+  Eigen::Matrix3d world_rotation = Eigen::Matrix3d::Identity();
+  std::string orientation_note;  // empty when the world was not turned
+  // Takes a point of the dataset's files (e.g. gt_mesh.ply) to the views' world.
+  Eigen::Matrix3d FileToWorld() const { return metres_per_unit * world_rotation; }
+  // A simulated scan's ground truth (gt_mesh.ply, in the dataset's unit), when the directory has
+  // one; else empty.
   std::filesystem::path ground_truth_mesh;
 };
 

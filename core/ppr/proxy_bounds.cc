@@ -2,44 +2,22 @@
 
 #include <fmt/format.h>
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
+#include "core/camera/axes_meeting_point.h"
 #include "core/ppr/plant_proxy.h"
 
 namespace avc::ppr {
 
 Eigen::AlignedBox3d BoxFromCameras(const std::vector<camera::Camera>& cameras) {
-  if (cameras.size() < 2) {
-    throw std::invalid_argument(fmt::format(
-        "BoxFromCameras: need at least two cameras to locate the object, got {}", cameras.size()));
+  Eigen::Vector3d centre;
+  try {
+    centre = camera::AxesMeetingPoint(cameras);
+  } catch (const std::invalid_argument& error) {
+    throw std::invalid_argument(fmt::format("BoxFromCameras: {}", error.what()));
   }
-  // Least squares point nearest to every optical axis: sum (I - a a^T) (p - c) = 0.
-  Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
-  for (size_t i = 0; i < cameras.size(); ++i) {
-    const auto& camera = cameras[i];
-    if (const std::string problem = camera.intrinsics.Validate(); !problem.empty()) {
-      throw std::invalid_argument(fmt::format("BoxFromCameras: camera #{}: {}", i, problem));
-    }
-    if (!camera.T_cam_world.matrix().allFinite()) {
-      throw std::invalid_argument(
-          fmt::format("BoxFromCameras: camera #{}: pose T_cam_world is not finite", i));
-    }
-    const Eigen::Vector3d axis = camera.Axis();
-    const Eigen::Matrix3d projector = Eigen::Matrix3d::Identity() - axis * axis.transpose();
-    normal += projector;
-    rhs += projector * camera.Centre();
-  }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(normal);
-  if (eigen.eigenvalues()(0) < 1e-6 * static_cast<double>(cameras.size())) {
-    throw std::invalid_argument(
-        "BoxFromCameras: the optical axes are (nearly) parallel, so they do not meet near one "
-        "point");
-  }
-  const Eigen::Vector3d centre = normal.ldlt().solve(rhs);
   double half = 0;
   for (size_t i = 0; i < cameras.size(); ++i) {
     const auto& k = cameras[i].intrinsics;

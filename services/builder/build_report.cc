@@ -25,7 +25,8 @@ nlohmann::ordered_json StatsJson(const eval::DistanceStats& stats) {
 }  // namespace
 
 BuildReport MakeBuildReport(const Reconstruction& reconstruction, MvsMethod method,
-                            const std::filesystem::path& ground_truth_mesh) {
+                            const std::filesystem::path& ground_truth_mesh,
+                            const Eigen::Matrix3d& ground_truth_to_world) {
   BuildReport report;
   report.method = MvsMethodName(method);
   report.images = reconstruction.masks.views.size();
@@ -40,8 +41,11 @@ BuildReport MakeBuildReport(const Reconstruction& reconstruction, MvsMethod meth
   report.timings = reconstruction.timings;
   report.masks = reconstruction.masks;
   report.soil = reconstruction.soil;
+  report.support = reconstruction.support;
   if (!ground_truth_mesh.empty() && report.points > 0) {
-    const geometry::Mesh truth = geometry::ReadMesh(ground_truth_mesh);
+    geometry::Mesh truth = geometry::ReadMesh(ground_truth_mesh);
+    const Eigen::Matrix3f to_world = ground_truth_to_world.cast<float>();
+    for (Eigen::Vector3f& vertex : truth.vertices) vertex = to_world * vertex;
     eval::EvalOptions options;
     options.thresholds = {0.0005, 0.001, 0.002, 0.005};
     eval::EvalResult result = eval::EvaluatePointCloud(truth, reconstruction.points.cloud, options);
@@ -93,6 +97,11 @@ nlohmann::ordered_json BuildReportToJson(const BuildReport& report) {
   }
   json["masks"] = masks;
   json["soil"] = report.soil ? nlohmann::ordered_json(SoilLevelToJson(*report.soil)) : nullptr;
+  json["support"] = report.support
+                        ? nlohmann::ordered_json{{"top_z_m", report.support->z},
+                                                 {"jump", report.support->jump},
+                                                 {"mass_fraction", report.support->mass_fraction}}
+                        : nullptr;
   nlohmann::ordered_json timings = nlohmann::ordered_json::object();
   for (const StageTime& t : report.timings) timings[t.stage + "_s"] = t.seconds;
   json["timings"] = timings;
@@ -110,10 +119,14 @@ std::string BuildReportToText(const BuildReport& report) {
         "merged into the proxy: {} points ({} outside it, {} in voxels with too few)\n",
         report.merged_points, report.outliers_outside_proxy, report.outliers_in_sparse_voxels);
   }
-  text += report.soil
-              ? fmt::format("soil surface at z = {:.1f} mm (contrast {:.2f}, {} patches)\n",
-                            report.soil->z * 1e3, report.soil->contrast, report.soil->patches)
-              : std::string("soil surface not found: plant height from the proxy's base\n");
+  if (report.support) text += DescribeSupport(*report.support) + "\n";
+  if (report.soil) {
+    text += fmt::format("soil surface at z = {:.1f} mm (contrast {:.2f}, {} patches)\n",
+                        report.soil->z * 1e3, report.soil->contrast, report.soil->patches);
+  } else {
+    text += report.support ? "soil surface not found: plant height from the support's top\n"
+                           : "soil surface not found: plant height from the proxy's base\n";
+  }
   if (report.accuracy) {
     const eval::EvalResult& a = *report.accuracy;
     text += fmt::format("against the ground truth: mean distance {:.3f} mm (RMS {:.3f} mm)",

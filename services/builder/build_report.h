@@ -29,15 +29,18 @@ struct BuildReport {
   std::vector<StageTime> timings;
   double peak_memory_mb = 0;  // of this process so far
   segmentation::MaskSummary masks;
-  std::optional<SoilLevel> soil;  // where the plant's height is measured from, when found
+  std::optional<SoilLevel> soil;      // where the plant's height is measured from, when found
+  std::optional<SupportTop> support;  // what the proxy was cut at, when found
   // Present when a ground-truth mesh was given.
   std::optional<eval::EvalResult> accuracy;
 };
 
 // Evaluates against `ground_truth_mesh` when it is not empty (throws naming the file if it
-// cannot be read).
+// cannot be read); its coordinates are taken to the views' world by `ground_truth_to_world`
+// (ViewSet::FileToWorld(): the dataset's unit and upright turn).
 BuildReport MakeBuildReport(const Reconstruction& reconstruction, MvsMethod method,
-                            const std::filesystem::path& ground_truth_mesh);
+                            const std::filesystem::path& ground_truth_mesh,
+                            const Eigen::Matrix3d& ground_truth_to_world);
 
 nlohmann::ordered_json BuildReportToJson(const BuildReport& report);
 // A few lines for a terminal.

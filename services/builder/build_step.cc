@@ -20,7 +20,7 @@ void BuildModel(const fs::path& scan_dir, const fs::path& model_dir,
         }
       });
   const BuildReport build_report =
-      MakeBuildReport(reconstruction, options.method, set.ground_truth_mesh);
+      MakeBuildReport(reconstruction, options.method, set.ground_truth_mesh, set.FileToWorld());
   WriteReconstruction(model_dir, set, reconstruction, build_report, /*overwrite=*/true);
 }
 

@@ -15,6 +15,7 @@ std::string Problem(const ReconstructOptions& options) {
     options.patch.Validate();
     options.sweep.Validate();
     options.soil.Validate();
+    options.support.Validate();
   } catch (const std::invalid_argument& e) {
     return e.what();
   }
@@ -190,6 +191,20 @@ void AddSoil(OptionTable<ReconstructOptions>& table) {
             0, 1});
 }
 
+void AddSupport(OptionTable<ReconstructOptions>& table) {
+  table
+      .Add("support.enabled", [](auto& o) -> auto& { return o.support.enabled; },
+           {"", "find a support the masks took for plant and cut the proxy at its top"})
+      .Add(
+          "support.min_jump", [](auto& o) -> auto& { return o.support.min_jump; },
+          {"", "the support's top slice holds this many times the plant's median slice", 1.01, 1e6})
+      .Add("support.min_mass_fraction",
+           [](auto& o) -> auto& { return o.support.min_mass_fraction; },
+           {"", "the support and below hold at least this fraction of the proxy", 0, 1})
+      .Add("support.min_plant_slices", [](auto& o) -> auto& { return o.support.min_plant_slices; },
+           {"slices", "plant slices needed above a support", 1, 100000});
+}
+
 OptionTable<ReconstructOptions> MakeTable() {
   OptionTable<ReconstructOptions> table("builder", Problem);
   AddMethods(table);
@@ -197,6 +212,7 @@ OptionTable<ReconstructOptions> MakeTable() {
   AddPatch(table);
   AddSweep(table);
   AddSoil(table);
+  AddSupport(table);
   return table;
 }
 

@@ -1,6 +1,7 @@
 #include "services/builder/reconstruction.h"
 
 #include <fmt/format.h>
+#include <tbb/parallel_for.h>
 
 #include <chrono>
 #include <opencv2/core.hpp>
@@ -8,6 +9,7 @@
 
 #include "core/dataset/view_transforms.h"
 #include "core/ppr/proxy_bounds.h"
+#include "core/ppr/proxy_silhouette.h"
 
 namespace avc::builder {
 namespace {
@@ -25,6 +27,53 @@ class StageClock {
   std::vector<StageTime>* timings_;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
+
+ppr::PlantProxy CarveProxy(const std::vector<dataset::View>& views, const Eigen::AlignedBox3d& box,
+                           const ppr::ProxyOptions& options,
+                           const std::function<void(const std::string&, size_t, size_t)>& report) {
+  ppr::PlantProxy proxy(box, options);
+  for (size_t i = 0; i < views.size(); ++i) {
+    proxy.AddView(views[i]);
+    report("proxy", i + 1, views.size());
+  }
+  return proxy;
+}
+
+// True when most computed masks separate the plant by its distance from the backdrop's colour,
+// which keeps a pale stage, block or pot as well; excess-green masks leave them out already, and
+// given masks are trusted.
+bool MasksKeepTheSupport(const segmentation::MaskSummary& masks) {
+  int by_distance = 0;
+  for (const segmentation::ViewMask& view : masks.views) {
+    by_distance += !view.given && view.method == segmentation::MaskMethod::kBackgroundDistance;
+  }
+  return 2 * by_distance > static_cast<int>(masks.views.size());
+}
+
+// A support in `proxy` whose top lies inside the box: raises the box's floor to it.
+std::optional<SupportTop> CutAtSupport(const SupportOptions& options, Eigen::AlignedBox3d& box,
+                                       const ppr::PlantProxy& proxy) {
+  std::optional<SupportTop> support =
+      FindSupportTop(proxy.OccupiedCentres(), proxy.voxel_size(), options);
+  if (!support || support->z <= box.min().z() + 0.5 * proxy.voxel_size() ||
+      support->z >= box.max().z()) {
+    return std::nullopt;
+  }
+  box.min().z() = support->z;
+  return support;
+}
+
+// Removes from every mask what no occupied voxel projects to (the support the proxy was cut
+// at), and updates the masks' plant fractions.
+void CutMasksToProxy(dataset::ViewSet& set, const mvs::MvsBounds& proxy,
+                     segmentation::MaskSummary& summary) {
+  tbb::parallel_for(size_t{0}, set.views.size(), [&](size_t i) {
+    dataset::View& view = set.views[i];
+    view.mask &= ppr::ProxySilhouette(proxy, view.camera);
+    summary.views[i].plant_fraction =
+        static_cast<double>(cv::countNonZero(view.mask)) / static_cast<double>(view.mask.total());
+  });
+}
 
 }  // namespace
 
@@ -75,19 +124,35 @@ Reconstruction Reconstruct(dataset::ViewSet& set, const ReconstructOptions& opti
   }
   clock.Finish("masks");
 
-  const Eigen::AlignedBox3d box = ppr::BoundsFromViews(set.views);
-  ppr::PlantProxy proxy(box, options.proxy);
-  for (size_t i = 0; i < set.views.size(); ++i) {
-    proxy.AddView(set.views[i]);
-    report("proxy", i + 1, set.views.size());
+  Eigen::AlignedBox3d box = ppr::BoundsFromViews(set.views);
+  ppr::ProxyOptions proxy_options = options.proxy;
+  ppr::PlantProxy proxy = CarveProxy(set.views, box, proxy_options, report);
+  // Masks that keep everything unlike the backdrop (not the green of foliage) keep what the plant
+  // stands on too. The proxy's first level shows it: cut the box at its top and carve again,
+  // with the voxels the whole box would have had; then once more on the final voxels, which
+  // place the top to a voxel.
+  std::optional<SupportTop> support;
+  if (MasksKeepTheSupport(masks)) support = CutAtSupport(options.support, box, proxy);
+  if (support && proxy_options.final_voxel_size == 0) {
+    proxy_options.final_voxel_size =
+        proxy.voxel_size() / static_cast<double>(1 << options.proxy.resolution_increases);
   }
+  if (support) proxy = CarveProxy(set.views, box, proxy_options, report);
   for (int i = 0; i < options.proxy.resolution_increases; ++i) proxy.IncreaseResolution();
+  if (support) {
+    if (auto finer = CutAtSupport(options.support, box, proxy)) {
+      support = finer;
+      proxy = CarveProxy(set.views, box, proxy_options, report);
+      for (int i = 0; i < options.proxy.resolution_increases; ++i) proxy.IncreaseResolution();
+    }
+  }
   if (proxy.Counts().occupied == 0) {
     throw std::runtime_error(fmt::format(
         "the plant proxy is empty: no voxel is inside the plant masks of at least {} views; the "
         "masks or the cameras disagree",
         options.proxy.min_plant_views));
   }
+  if (support) CutMasksToProxy(set, proxy.ToMvsBounds(), masks);
   clock.Finish("proxy");
 
   report("soil", 0, 1);
@@ -109,7 +174,8 @@ Reconstruction Reconstruct(dataset::ViewSet& set, const ReconstructOptions& opti
   if (points.size() > 0) merged = merge::MergeIntoProxy(points, proxy.ToMvsBounds());
   clock.Finish("merge");
   return {std::move(proxy), std::move(points),  std::move(merged),
-          std::move(masks), std::move(timings), soil};
+          std::move(masks), std::move(timings), soil,
+          support};
 }
 
 }  // namespace avc::builder

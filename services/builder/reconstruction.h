@@ -18,6 +18,7 @@
 #include "core/ppr/plant_proxy.h"
 #include "core/segmentation/fill_masks.h"
 #include "services/builder/soil_level.h"
+#include "services/builder/support_level.h"
 
 namespace avc::builder {
 
@@ -34,6 +35,7 @@ struct ReconstructOptions {
   mvs::PatchMvsOptions patch;
   mvs::PlaneSweepOptions sweep;
   SoilLevelOptions soil;
+  SupportOptions support;
 };
 
 struct StageTime {
@@ -50,6 +52,9 @@ struct Reconstruction {
   std::vector<StageTime> timings;  // wall clock, for reports only (never in the products)
   // The soil surface under the plant, where its height is measured from (soil_level.h).
   std::optional<SoilLevel> soil;
+  // What the plant stands on when the masks took it for plant; the proxy and masks are cut at
+  // its top (support_level.h).
+  std::optional<SupportTop> support;
 };
 
 // stage: what is running; done/total: its progress.

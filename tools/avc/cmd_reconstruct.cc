@@ -32,6 +32,7 @@ struct ReconstructArgs {
   std::string dataset;
   std::string output;
   int stride = 1;
+  std::string units = "auto";
   bool no_evaluation = false;
   bool overwrite = false;
   bool json = false;
@@ -87,14 +88,18 @@ int RunReconstruct(const ReconstructArgs& args) {
   const PipelineOptions pipeline = LoadPipelineOptions(args);
   const builder::ReconstructOptions& options = pipeline.build;
 
-  dataset::ViewSet set = dataset::ReadDataset(args.dataset, {.stride = args.stride});
-  std::cerr << fmt::format("{}: {} views ({})\n", args.dataset, set.views.size(), set.format);
+  dataset::ViewSet set = dataset::ReadDataset(
+      args.dataset, {.stride = args.stride, .units = dataset::ParseLengthUnit(args.units)});
+  std::cerr << fmt::format("{}: {} views ({}), lengths in {}; results in metres\n", args.dataset,
+                           set.views.size(), set.format, set.unit_note);
+  if (!set.orientation_note.empty())
+    std::cerr << args.dataset << ": " << set.orientation_note << "\n";
   const std::filesystem::path output = builder::ChooseOutputDirectory(args.dataset, args.output);
   const builder::Reconstruction reconstruction = builder::Reconstruct(set, options, ShowProgress);
   if (isatty(STDERR_FILENO)) std::cerr << "\x1b[K";
   const builder::BuildReport report = builder::MakeBuildReport(
       reconstruction, options.method,
-      args.no_evaluation ? std::filesystem::path() : set.ground_truth_mesh);
+      args.no_evaluation ? std::filesystem::path() : set.ground_truth_mesh, set.FileToWorld());
   const auto files =
       builder::WriteReconstruction(output, set, reconstruction, report, args.overwrite);
   std::cout << builder::BuildReportToText(report);
@@ -136,7 +141,8 @@ void RegisterReconstruct(CLI::App& root, int* exit_code) {
       "point), merged into the proxy's voxels (merged.ply), clustered into surface patches\n"
       "(clusters.ply) and surfaced (mesh.ply; plant traits in traits.csv and traits.json).\n"
       "Datasets: a scan directory (cameras.json + images/), a COLMAP text model (cameras.txt +\n"
-      "images.txt, in the folder or in sparse/ or colmap/) or a Middlebury set (*_par.txt).\n"
+      "images.txt, in the folder or in sparse/ or colmap/), a Middlebury set (*_par.txt) or a\n"
+      "ROMI scan (index.json + undist/, millimetres). Lengths are converted to metres.\n"
       "A simulated scan's ground truth (gt_mesh.ply) is used to report accuracy.\n"
       "\n"
       "Example: avc reconstruct --dataset scans/rosette --output rosette-result");
@@ -149,6 +155,12 @@ void RegisterReconstruct(CLI::App& root, int* exit_code) {
   AddShorthand(command, &args->config, "--masks", "masks.method",
                "plant masks: auto, excess_green or background_distance");
   command->add_option("--stride", args->stride, "use every Nth image")->capture_default_str();
+  command
+      ->add_option("--units", args->units,
+                   "the dataset's length unit: m, mm, or auto (what the dataset declares, else "
+                   "told from the cameras' distances); results are always in metres")
+      ->check(CLI::IsMember({"auto", "m", "mm"}))
+      ->capture_default_str();
   AddConfigFlags(command, &args->config, "");
   command->footer(
       "--config and --set take the options of avc-builder, avc-clusterer and avc-surfacer by\n"
