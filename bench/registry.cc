@@ -12,6 +12,7 @@
 #include "bench/merge/merge_bench.h"
 #include "bench/mvs/mvs_bench.h"
 #include "bench/nbv/nbv_bench.h"
+#include "bench/real/real_bench.h"
 #include "bench/render/render_bench.h"
 #include "bench/surface/surface_bench.h"
 
@@ -67,6 +68,11 @@ const std::vector<Benchmark>& AllBenchmarks() {
        "views, the 3x10 orbit and an information-gain planner in the simulated cell: ground-truth "
        "coverage against images",
        RunNbvBenchmark},
+      {"real",
+       "avc reconstruct on a real scan (the shared ROMI arabidopsis) against the scanner's own "
+       "mesh: MVS points and mesh precision/recall, area, pieces, masks per view, height and "
+       "width, wall time and peak memory at 18, 36 and 72 views",
+       RunRealBenchmark},
       {"surface",
        "the surfacer (Algorithm 3) against trimmed Poisson, greedy projection, advancing front "
        "and Pound-style patches on ~3000 leaf points of each plant preset: area ratio, RMSE, "

@@ -1,0 +1,164 @@
+#include "bench/real/real_scan_figures.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <fstream>
+#include <opencv2/imgcodecs.hpp>
+#include <stdexcept>
+
+#include "bench/real/reference_silhouette.h"
+#include "core/dataset/dataset_reader.h"
+#include "core/eval/metrics.h"
+#include "core/geometry/mesh_io.h"
+#include "core/geometry/point_cloud_io.h"
+#include "core/traits/plant_traits.h"
+
+namespace avc::bench {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::vector<double> kThresholds = {0.001, 0.002, 0.005};
+
+nlohmann::json ReadJsonFile(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error(file.string() + ": cannot open");
+  nlohmann::json json = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (json.is_discarded()) throw std::runtime_error(file.string() + ": not valid JSON");
+  return json;
+}
+
+nlohmann::json Scores(const eval::EvalResult& result) {
+  nlohmann::json json = nlohmann::json::object();
+  for (const eval::ThresholdScore& score : result.scores) {
+    json[fmt::format("{:g}mm", score.threshold * 1e3)] = {
+        {"precision", score.precision}, {"recall", score.recall}, {"fscore", score.fscore}};
+  }
+  return json;
+}
+
+double Median(std::vector<double> values) {
+  if (values.empty()) return 0;
+  auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+  std::nth_element(values.begin(), middle, values.end());
+  return *middle;
+}
+
+nlohmann::json MaskFigures(const dataset::ViewSet& set, const fs::path& output,
+                           const geometry::Mesh& reference, double tolerance_px) {
+  nlohmann::json views = nlohmann::json::array();
+  std::vector<double> off, covered, fraction;
+  for (const dataset::View& view : set.views) {
+    const fs::path file = output / "masks" / fs::path(view.name).replace_extension(".png");
+    const cv::Mat mask = cv::imread(file.string(), cv::IMREAD_GRAYSCALE);
+    if (mask.empty()) throw std::runtime_error(file.string() + ": missing or unreadable mask");
+    const MaskAgainstReference figures =
+        CompareMask(mask, ReferenceSilhouette(reference, view.camera), tolerance_px);
+    views.push_back({{"view", view.name},
+                     {"plant_fraction", figures.plant_fraction},
+                     {"off_reference", figures.off_reference},
+                     {"reference_covered", figures.reference_covered}});
+    off.push_back(figures.off_reference);
+    covered.push_back(figures.reference_covered);
+    fraction.push_back(figures.plant_fraction);
+  }
+  return {{"tolerance_px", tolerance_px},
+          {"plant_fraction_median", Median(fraction)},
+          {"off_reference_median", Median(off)},
+          {"off_reference_max", *std::max_element(off.begin(), off.end())},
+          {"reference_covered_median", Median(covered)},
+          {"reference_covered_min", *std::min_element(covered.begin(), covered.end())},
+          {"views", views}};
+}
+
+}  // namespace
+
+nlohmann::json ReadStageTimes(const fs::path& output) {
+  const nlohmann::json build = ReadJsonFile(output / "build.json");
+  nlohmann::json json = build.at("timings");
+  json["views"] = build.at("images");
+  json["points"] = build.at("points");
+  return json;
+}
+
+nlohmann::json MeasureRealScan(const fs::path& dataset, const fs::path& output,
+                               const fs::path& reference_file,
+                               const RealScanFigureOptions& options) {
+  const dataset::ViewSet set =
+      dataset::ReadDataset(dataset, {.load_masks = false, .stride = options.stride});
+  geometry::Mesh reference = geometry::ReadMesh(reference_file);
+  const Eigen::Matrix3f to_world = set.FileToWorld().cast<float>();
+  for (Eigen::Vector3f& vertex : reference.vertices) vertex = to_world * vertex;
+
+  eval::EvalOptions eval_options;
+  eval_options.thresholds = kThresholds;
+  const geometry::PointCloud points = geometry::ReadPointCloud(output / "points.ply");
+  const eval::EvalResult point_eval = eval::EvaluatePointCloud(reference, points, eval_options);
+  const geometry::Mesh mesh = geometry::ReadMesh(output / "mesh.ply");
+  const eval::EvalResult mesh_eval = eval::EvaluateMesh(reference, mesh, eval_options);
+  const nlohmann::json surface = ReadJsonFile(output / "surface.json");
+  const nlohmann::json traits = ReadJsonFile(output / "traits.json");
+  const traits::PlantTraits reference_traits = traits::MeasureTraits(reference);
+
+  nlohmann::json json;
+  json["dataset_unit"] = set.unit;
+  json["points"] = {{"count", points.size()}, {"scores", Scores(point_eval)}};
+  json["mesh"] = {{"faces", mesh.num_faces()},
+                  {"pieces", surface.at("components")},
+                  {"area_m2", mesh_eval.reconstruction_area.value_or(0)},
+                  {"reference_area_m2", mesh_eval.gt_area},
+                  {"area_ratio", mesh_eval.area_ratio.value_or(0)},
+                  {"scores", Scores(mesh_eval)}};
+  json["traits"] = {{"height_m", traits.at("height_m")},
+                    {"reference_height_m", reference_traits.height},
+                    {"width_m", traits.at("width_m")},
+                    {"reference_width_m", reference_traits.width}};
+  json["masks"] = MaskFigures(set, output, reference, options.tolerance_px);
+  return json;
+}
+
+std::string FormatRealScanFigures(const nlohmann::json& figures) {
+  const auto score = [](const nlohmann::json& scores, const char* at, const char* what) {
+    return scores.at(at).at(what).get<double>();
+  };
+  const nlohmann::json& p = figures["points"]["scores"];
+  const nlohmann::json& m = figures["mesh"]["scores"];
+  const nlohmann::json& t = figures["traits"];
+  const nlohmann::json& masks = figures["masks"];
+  std::string text = "Against the reference mesh (millimetres; precision / recall):\n";
+  text += "              1 mm           2 mm           5 mm\n";
+  for (const auto& [name, scores] : {std::pair{"MVS points", &p}, std::pair{"mesh", &m}}) {
+    text += fmt::format("  {:<10}  {:.3f} / {:.3f}  {:.3f} / {:.3f}  {:.3f} / {:.3f}\n", name,
+                        score(*scores, "1mm", "precision"), score(*scores, "1mm", "recall"),
+                        score(*scores, "2mm", "precision"), score(*scores, "2mm", "recall"),
+                        score(*scores, "5mm", "precision"), score(*scores, "5mm", "recall"));
+  }
+  text += fmt::format(
+      "  {} MVS points; mesh {} faces in {} pieces, area {:.1f} cm^2 = {:.2f}x the reference's "
+      "{:.1f} cm^2\n",
+      figures["points"]["count"].get<size_t>(), figures["mesh"]["faces"].get<size_t>(),
+      figures["mesh"]["pieces"].get<int>(), 1e4 * figures["mesh"]["area_m2"].get<double>(),
+      figures["mesh"]["area_ratio"].get<double>(),
+      1e4 * figures["mesh"]["reference_area_m2"].get<double>());
+  text += fmt::format(
+      "  height {:.1f} mm (reference {:.1f}, {:+.1f} %), width {:.1f} mm (reference {:.1f}, "
+      "{:+.1f} %)\n",
+      1e3 * t["height_m"].get<double>(), 1e3 * t["reference_height_m"].get<double>(),
+      100 * (t["height_m"].get<double>() / t["reference_height_m"].get<double>() - 1),
+      1e3 * t["width_m"].get<double>(), 1e3 * t["reference_width_m"].get<double>(),
+      100 * (t["width_m"].get<double>() / t["reference_width_m"].get<double>() - 1));
+  text += fmt::format(
+      "  masks ({} views, within {} px of the reference's silhouette): plant {:.2f} % of the "
+      "image (median); mask pixels off the reference {:.1f} % median, {:.1f} % worst; reference "
+      "covered {:.1f} % median, {:.1f} % worst\n",
+      masks["views"].size(), masks["tolerance_px"].get<double>(),
+      100 * masks["plant_fraction_median"].get<double>(),
+      100 * masks["off_reference_median"].get<double>(),
+      100 * masks["off_reference_max"].get<double>(),
+      100 * masks["reference_covered_median"].get<double>(),
+      100 * masks["reference_covered_min"].get<double>());
+  return text;
+}
+
+}  // namespace avc::bench
