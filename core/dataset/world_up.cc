@@ -4,14 +4,25 @@
 
 namespace avc::dataset {
 
-std::optional<UprightTurn> FindUprightTurn(const std::vector<camera::Camera>& cameras) {
-  if (cameras.empty()) return std::nullopt;
+namespace {
+
+// The mean of the cameras' image-up directions (-y of each camera) in world coordinates.
+Eigen::Vector3d MeanImageUp(const std::vector<camera::Camera>& cameras) {
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   for (const camera::Camera& camera : cameras) {
-    // The image's up (-y) in world coordinates: minus the second row of R.
-    sum -= camera.T_cam_world.linear().row(1).transpose();
+    sum -= camera.T_cam_world.linear().row(1).transpose();  // minus the second row of R
   }
-  const Eigen::Vector3d mean = sum / static_cast<double>(cameras.size());
+  return cameras.empty() ? sum : Eigen::Vector3d(sum / static_cast<double>(cameras.size()));
+}
+
+}  // namespace
+
+bool CamerasAgreeZIsUp(const std::vector<camera::Camera>& cameras) {
+  return MeanImageUp(cameras).z() >= kMinUpAgreement;
+}
+
+std::optional<UprightTurn> FindUprightTurn(const std::vector<camera::Camera>& cameras) {
+  const Eigen::Vector3d mean = MeanImageUp(cameras);
   if (mean.norm() < kMinUpAgreement) return std::nullopt;
   Eigen::Index axis = 0;
   mean.cwiseAbs().maxCoeff(&axis);

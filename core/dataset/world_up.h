@@ -27,4 +27,8 @@ struct UprightTurn {
 // nullopt when +z is already up, or the cameras do not agree on an up direction.
 std::optional<UprightTurn> FindUprightTurn(const std::vector<camera::Camera>& cameras);
 
+// True when the cameras agree that +z is up (the mean of their image-up directions has a +z
+// component of at least kMinUpAgreement): "below the plant" means something.
+bool CamerasAgreeZIsUp(const std::vector<camera::Camera>& cameras);
+
 }  // namespace avc::dataset

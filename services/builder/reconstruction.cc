@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "core/dataset/view_transforms.h"
+#include "core/dataset/world_up.h"
 #include "core/ppr/proxy_bounds.h"
 #include "core/ppr/proxy_silhouette.h"
 
@@ -48,6 +49,13 @@ bool MasksKeepTheSupport(const segmentation::MaskSummary& masks) {
     by_distance += !view.given && view.method == segmentation::MaskMethod::kBackgroundDistance;
   }
   return 2 * by_distance > static_cast<int>(masks.views.size());
+}
+
+// A support lies below the plant: only where the views agree that z is up.
+bool CamerasAgreeZIsUp(const std::vector<dataset::View>& views) {
+  std::vector<camera::Camera> cameras;
+  for (const dataset::View& view : views) cameras.push_back(view.camera);
+  return dataset::CamerasAgreeZIsUp(cameras);
 }
 
 // A support in `proxy` whose top lies inside the box: raises the box's floor to it.
@@ -132,7 +140,9 @@ Reconstruction Reconstruct(dataset::ViewSet& set, const ReconstructOptions& opti
   // with the voxels the whole box would have had; then once more on the final voxels, which
   // place the top to a voxel.
   std::optional<SupportTop> support;
-  if (MasksKeepTheSupport(masks)) support = CutAtSupport(options.support, box, proxy);
+  if (MasksKeepTheSupport(masks) && CamerasAgreeZIsUp(set.views)) {
+    support = CutAtSupport(options.support, box, proxy);
+  }
   if (support && proxy_options.final_voxel_size == 0) {
     proxy_options.final_voxel_size =
         proxy.voxel_size() / static_cast<double>(1 << options.proxy.resolution_increases);

@@ -86,6 +86,7 @@ TEST(WorldUp, TurnsOnlyWhenTheCamerasAgreeOnAnotherUp) {
   Eigen::Matrix3d upright;
   upright << 0, -1, 0, 0, 0, -1, 1, 0, 0;
   EXPECT_FALSE(FindUprightTurn({Looking(upright), Looking(upright)}).has_value());
+  EXPECT_TRUE(CamerasAgreeZIsUp({Looking(upright), Looking(upright)}));
   // The same cameras in a world whose up is -z.
   Eigen::Matrix3d flipped = upright * Eigen::Vector3d(1, -1, -1).asDiagonal();
   const auto turn = FindUprightTurn({Looking(flipped), Looking(flipped)});
@@ -102,6 +103,8 @@ TEST(WorldUp, TurnsOnlyWhenTheCamerasAgreeOnAnotherUp) {
   // Cameras that disagree (half of them upside down) give no turn.
   Eigen::Matrix3d upside_down = Eigen::Vector3d(-1, -1, 1).asDiagonal() * flipped;
   EXPECT_FALSE(FindUprightTurn({Looking(flipped), Looking(upside_down)}).has_value());
+  EXPECT_FALSE(CamerasAgreeZIsUp({Looking(flipped), Looking(upside_down)}));
+  EXPECT_FALSE(CamerasAgreeZIsUp({Looking(flipped)}));
 }
 
 }  // namespace

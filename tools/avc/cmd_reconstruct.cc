@@ -84,17 +84,24 @@ void ShowProgress(const std::string& stage, size_t done, size_t total) {
             << std::flush;
 }
 
-int RunReconstruct(const ReconstructArgs& args) {
-  const PipelineOptions pipeline = LoadPipelineOptions(args);
-  const builder::ReconstructOptions& options = pipeline.build;
+struct BuiltModel {
+  size_t files = 0;
+  bool has_merged_points = false;
+  std::string report_json;
+};
 
+// Reads the dataset, builds and writes the model into `output`. The images, masks and proxy are
+// released on return, before clustering and surfacing read what they need from the files (they
+// would otherwise hold 0.5 GB more at the peak on a 72-view real scan).
+BuiltModel BuildModel(const ReconstructArgs& args, const builder::ReconstructOptions& options,
+                      const std::filesystem::path& output) {
   dataset::ViewSet set = dataset::ReadDataset(
       args.dataset, {.stride = args.stride, .units = dataset::ParseLengthUnit(args.units)});
   std::cerr << fmt::format("{}: {} views ({}), lengths in {}; results in metres\n", args.dataset,
                            set.views.size(), set.format, set.unit_note);
-  if (!set.orientation_note.empty())
+  if (!set.orientation_note.empty()) {
     std::cerr << args.dataset << ": " << set.orientation_note << "\n";
-  const std::filesystem::path output = builder::ChooseOutputDirectory(args.dataset, args.output);
+  }
   const builder::Reconstruction reconstruction = builder::Reconstruct(set, options, ShowProgress);
   if (isatty(STDERR_FILENO)) std::cerr << "\x1b[K";
   const builder::BuildReport report = builder::MakeBuildReport(
@@ -103,8 +110,16 @@ int RunReconstruct(const ReconstructArgs& args) {
   const auto files =
       builder::WriteReconstruction(output, set, reconstruction, report, args.overwrite);
   std::cout << builder::BuildReportToText(report);
-  size_t written = files.size();
-  if (reconstruction.merged.size() > 0) {
+  return {files.size(), reconstruction.merged.size() > 0,
+          builder::BuildReportToJson(report).dump()};
+}
+
+int RunReconstruct(const ReconstructArgs& args) {
+  const PipelineOptions pipeline = LoadPipelineOptions(args);
+  const std::filesystem::path output = builder::ChooseOutputDirectory(args.dataset, args.output);
+  const BuiltModel model = BuildModel(args, pipeline.build, output);
+  size_t written = model.files;
+  if (model.has_merged_points) {
     // Clustering (paper §3.2) and surfacing (§4) on the files just written, with the code
     // avc-clusterer and avc-surfacer run for a scan: the same files give the same bytes offline
     // and over the bus. Phase 2 grows the cells where the views' plant masks see leaf.
@@ -118,14 +133,16 @@ int RunReconstruct(const ReconstructArgs& args) {
       const nlohmann::json surface = nlohmann::json::parse(ReadFile(output / "surface.json"));
       const nlohmann::json traits = nlohmann::json::parse(ReadFile(output / "traits.json"));
       std::cout << fmt::format(
-          "surface: {} faces in {} pieces, {:.1f} cm^2\n", surface.at("faces").get<int64_t>(),
-          surface.at("components").get<int64_t>(), 1e4 * traits.at("total_area_m2").get<double>());
+          "surface: {} faces in {} pieces, {:.1f} cm^2; plant height {:.1f} mm, width {:.1f} mm\n",
+          surface.at("faces").get<int64_t>(), surface.at("components").get<int64_t>(),
+          1e4 * traits.at("total_area_m2").get<double>(), 1e3 * traits.at("height_m").get<double>(),
+          1e3 * traits.at("width_m").get<double>());
     } catch (const std::runtime_error& error) {
       std::cout << "no surface: " << error.what() << "\n";
     }
   }
   std::cout << fmt::format("wrote {} files to {}\n", written, output.string());
-  if (args.json) std::cout << builder::BuildReportToJson(report).dump() << "\n";
+  if (args.json) std::cout << model.report_json << "\n";
   return 0;
 }
 

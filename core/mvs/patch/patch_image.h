@@ -39,7 +39,7 @@ class PatchImage {
   }
   // The nearest pixel is inside the image and usable.
   bool Usable(double u, double v) const;
-  bool HasDepthRange() const { return !near_.empty(); }
+  bool HasDepthRange() const { return has_depth_range_; }
   // Depth interval at the nearest pixel; {0, 0} where the proxy does not cover it.
   std::pair<float, float> DepthRange(double u, double v) const;
 
@@ -70,7 +70,10 @@ class PatchImage {
   // Interleaved R G B, row-major, as bytes: a quarter of the memory traffic of floats, and the
   // same samples (bytes are exact in float).
   std::vector<uint8_t> rgb_;
-  cv::Mat usable_, near_, far_;
+  cv::Mat usable_;
+  bool has_depth_range_ = false;
+  cv::Rect depth_box_;  // where near_ and far_ lie in the image
+  cv::Mat near_, far_;
 };
 
 }  // namespace avc::mvs::patch
