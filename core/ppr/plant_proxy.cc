@@ -145,6 +145,9 @@ PlantProxy& PlantProxy::operator=(PlantProxy&&) noexcept = default;
 void PlantProxy::AddView(const camera::Camera& camera, const cv::Mat& mask,
                          const std::string& name) {
   const std::string label = name.empty() ? fmt::format("#{}", views_.size()) : name;
+  if (views_released_) {
+    throw std::logic_error("PlantProxy::AddView: the views were released (ReleaseViews)");
+  }
   views_.push_back(PrepareCarvingView(camera, mask, label));
   Carve(views_.back());
 }
@@ -173,7 +176,16 @@ void PlantProxy::Carve(const CarvingView& view) {
   tree_.reset();
 }
 
+void PlantProxy::ReleaseViews() {
+  views_released_ = true;
+  view_count_ = static_cast<int>(views_.size());
+  views_ = {};
+}
+
 void PlantProxy::IncreaseResolution() {
+  if (views_released_) {
+    throw std::logic_error("PlantProxy::IncreaseResolution: the views were released");
+  }
   if (top_level_ + 1 > kMaxTopLevel) {
     throw std::runtime_error("PlantProxy::IncreaseResolution: octree depth exhausted");
   }

@@ -85,7 +85,10 @@ class PlantProxy {
   double voxel_size() const { return voxel_size_; }
   // The box the voxels cover: the constructor's box rounded outwards to whole voxels.
   Eigen::AlignedBox3d box() const;
-  int view_count() const { return static_cast<int>(views_.size()); }
+  int view_count() const { return views_released_ ? view_count_ : static_cast<int>(views_.size()); }
+  // Frees the views' carving data once no view will be added and the resolution is final (a
+  // 72-view real scan's masks are 126 MB); AddView and IncreaseResolution then throw.
+  void ReleaseViews();
   const ProxyOptions& options() const { return options_; }
 
   VoxelState State(const Eigen::Vector3d& point) const;
@@ -114,6 +117,8 @@ class PlantProxy {
   Eigen::Array3i box_begin_, box_end_;  // voxel index range [begin, end) covered
   std::vector<ProxyCell> cells_;        // not-free space, octree depth-first order
   std::vector<CarvingView> views_;
+  bool views_released_ = false;
+  int view_count_ = 0;                             // once released
   mutable std::unique_ptr<octomap::OcTree> tree_;  // null when stale
 };
 

@@ -162,11 +162,15 @@ Reconstruction Reconstruct(dataset::ViewSet& set, const ReconstructOptions& opti
         "masks or the cameras disagree",
         options.proxy.min_plant_views));
   }
+  proxy.ReleaseViews();
   if (support) CutMasksToProxy(set, proxy.ToMvsBounds(), masks);
   clock.Finish("proxy");
 
   report("soil", 0, 1);
-  std::optional<SoilLevel> soil = FindSoilLevel(set.views, proxy.ToMvsBounds(), options.soil);
+  // On a support the plant's base is its top; the soil search assumes masks that leave the pot
+  // and soil out, which these did not.
+  std::optional<SoilLevel> soil;
+  if (!support) soil = FindSoilLevel(set.views, proxy.ToMvsBounds(), options.soil);
   report("soil", 1, 1);
   clock.Finish("soil");
 

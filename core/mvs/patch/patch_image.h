@@ -51,12 +51,13 @@ class PatchImage {
     if (y > height_ - 2) y = height_ - 2;
     const float fx = u - x;
     const float fy = v - y;
-    const uint8_t* p00 = rgb_.data() + (static_cast<size_t>(y) * width_ + x) * 3;
+    const uint8_t* p00 = bgr_.data + (static_cast<size_t>(y) * width_ + x) * 3;
     const uint8_t* p10 = p00 + static_cast<size_t>(width_) * 3;
     const float w00 = (1 - fx) * (1 - fy), w01 = fx * (1 - fy), w10 = (1 - fx) * fy, w11 = fx * fy;
     for (int c = 0; c < 3; ++c) {
-      rgb[c] = w00 * static_cast<float>(p00[c]) + w01 * static_cast<float>(p00[c + 3]) +
-               w10 * static_cast<float>(p10[c]) + w11 * static_cast<float>(p10[c + 3]);
+      const int b = 2 - c;  // the pixels are B G R
+      rgb[c] = w00 * static_cast<float>(p00[b]) + w01 * static_cast<float>(p00[b + 3]) +
+               w10 * static_cast<float>(p10[b]) + w11 * static_cast<float>(p10[b + 3]);
     }
   }
 
@@ -67,13 +68,13 @@ class PatchImage {
   Eigen::Vector3d p4_;  // K t
   Eigen::Vector3d m_row3_;
   Eigen::Vector3d centre_;
-  // Interleaved R G B, row-major, as bytes: a quarter of the memory traffic of floats, and the
-  // same samples (bytes are exact in float).
-  std::vector<uint8_t> rgb_;
-  cv::Mat usable_;
+  // The view's B G R bytes, continuous: a quarter of the memory traffic of floats, and the same
+  // samples (bytes are exact in float).
+  cv::Mat bgr_;
   bool has_depth_range_ = false;
-  cv::Rect depth_box_;  // where near_ and far_ lie in the image
-  cv::Mat near_, far_;
+  // Where usable_, near_ and far_ lie in the image: the proxy's footprint, or the whole image.
+  cv::Rect usable_box_;
+  cv::Mat usable_, near_, far_;
 };
 
 }  // namespace avc::mvs::patch
