@@ -44,8 +44,8 @@ std::unordered_set<Key, KeyHash> OccupiedKeys(const mvs::MvsBounds& proxy) {
     const Eigen::Vector3d cell = proxy.occupied_centres[i].cast<double>() / proxy.voxel_size;
     const Eigen::Vector3d offset = cell.array() - cell.array().floor() - 0.5;
     if (!cell.allFinite() || offset.cwiseAbs().maxCoeff() > 0.1) {
-      throw std::invalid_argument(fmt::format(
-          "MergeIntoProxy: occupied centre {} is not a voxel centre of the proxy's grid", i));
+      throw std::invalid_argument(
+          fmt::format("occupied centre {} is not a voxel centre of the proxy's grid", i));
     }
     keys.insert(KeyOf(cell));
   }
@@ -53,6 +53,40 @@ std::unordered_set<Key, KeyHash> OccupiedKeys(const mvs::MvsBounds& proxy) {
 }
 
 }  // namespace
+
+mvs::MvsPoints PointsInProxy(const mvs::MvsPoints& points, const mvs::MvsBounds& proxy,
+                             int margin_voxels, uint64_t* removed) {
+  if (!(std::isfinite(proxy.voxel_size) && proxy.voxel_size > 0)) {
+    throw std::invalid_argument(
+        fmt::format("PointsInProxy: voxel size {} must be positive", proxy.voxel_size));
+  }
+  if (margin_voxels < 0) throw std::invalid_argument("PointsInProxy: negative margin");
+  std::unordered_set<Key, KeyHash> near = OccupiedKeys(proxy);
+  if (margin_voxels > 0) {
+    const std::vector<Key> occupied(near.begin(), near.end());
+    const int m = margin_voxels;
+    for (const auto& [z, y, x] : occupied) {
+      for (int dz = -m; dz <= m; ++dz) {
+        for (int dy = -m; dy <= m; ++dy) {
+          for (int dx = -m; dx <= m; ++dx) near.insert({z + dz, y + dy, x + dx});
+        }
+      }
+    }
+  }
+  mvs::MvsPoints kept;
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (!near.contains(KeyOf(points.cloud.positions[i].cast<double>() / proxy.voxel_size))) {
+      continue;
+    }
+    kept.cloud.positions.push_back(points.cloud.positions[i]);
+    kept.cloud.normals.push_back(points.cloud.normals[i]);
+    kept.cloud.colors.push_back(points.cloud.colors[i]);
+    kept.confidence.push_back(points.confidence[i]);
+    kept.views.push_back(points.views[i]);
+  }
+  if (removed != nullptr) *removed = points.size() - kept.size();
+  return kept;
+}
 
 MergedPoints MergeIntoProxy(const mvs::MvsPoints& points, const mvs::MvsBounds& proxy,
                             const MergeOptions& options) {

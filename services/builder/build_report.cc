@@ -34,7 +34,8 @@ BuildReport MakeBuildReport(const Reconstruction& reconstruction, MvsMethod meth
   report.points_per_image =
       report.images == 0 ? 0 : static_cast<double>(report.points) / report.images;
   report.merged_points = reconstruction.merged.size();
-  report.outliers_outside_proxy = reconstruction.merged.outside_proxy;
+  report.outliers_outside_proxy =
+      reconstruction.points_outside_proxy + reconstruction.merged.outside_proxy;
   report.outliers_in_sparse_voxels = reconstruction.merged.in_sparse_voxels;
   report.voxel_size = reconstruction.proxy.voxel_size();
   report.voxels = reconstruction.proxy.Counts();

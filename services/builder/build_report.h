@@ -20,7 +20,7 @@ struct BuildReport {
   size_t points = 0;
   double points_per_image = 0;
   // Merging into the proxy's voxels: points kept, and MVS points dropped as outliers (outside
-  // the occupied voxels, or in voxels holding too few points).
+  // the occupied voxels, removed from points.ply unless kept, or in voxels holding too few).
   size_t merged_points = 0;
   uint64_t outliers_outside_proxy = 0;
   uint64_t outliers_in_sparse_voxels = 0;

@@ -193,6 +193,9 @@ void AddSoil(OptionTable<ReconstructOptions>& table) {
 
 void AddSupport(OptionTable<ReconstructOptions>& table) {
   table
+      .Add("points.proxy_margin", [](auto& o) -> auto& { return o.points_proxy_margin; },
+           {"voxels", "MVS points farther than this from the proxy leave points.ply (-1: keep all)",
+            -1, 100})
       .Add("support.enabled", [](auto& o) -> auto& { return o.support.enabled; },
            {"", "find a support the masks took for plant and cut the proxy at its top"})
       .Add(

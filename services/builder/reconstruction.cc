@@ -183,13 +183,17 @@ Reconstruction Reconstruct(dataset::ViewSet& set, const ReconstructOptions& opti
   } else if (options.method == MvsMethod::kPlaneSweep) {
     points = mvs::RunPlaneSweep(set.views, proxy.ToMvsBounds(), options.sweep, mvs_progress);
   }
+  uint64_t outside_proxy = 0;
+  if (options.points_proxy_margin >= 0 && points.size() > 0) {
+    points = merge::PointsInProxy(points, proxy.ToMvsBounds(), options.points_proxy_margin,
+                                  &outside_proxy);
+  }
   clock.Finish("mvs");
   merge::MergedPoints merged;
   if (points.size() > 0) merged = merge::MergeIntoProxy(points, proxy.ToMvsBounds());
   clock.Finish("merge");
-  return {std::move(proxy), std::move(points),  std::move(merged),
-          std::move(masks), std::move(timings), soil,
-          support};
+  return {std::move(proxy), std::move(points),  outside_proxy, std::move(merged),
+          std::move(masks), std::move(timings), soil,          support};
 }
 
 }  // namespace avc::builder

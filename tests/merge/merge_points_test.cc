@@ -55,6 +55,30 @@ TEST(MergeIntoProxy, AveragesDenseVoxelsAndCountsWhatItDrops) {
   EXPECT_EQ(merged.voxel_size, kVoxel);
 }
 
+TEST(PointsInProxy, KeepsThePointsInOrNearOccupiedVoxelsInTheirOrder) {
+  const mvs::MvsBounds proxy{{Centre(0, 0, 0), Centre(1, 0, 0)}, kVoxel};
+  mvs::MvsPoints points;
+  AddPoint(points, Centre(1, 0, 0), {0, 0, 1}, 10, 0.1f);   // in
+  AddPoint(points, Centre(2, 1, 0), {0, 0, 1}, 20, 0.2f);   // a voxel off (diagonal)
+  AddPoint(points, Centre(0, 0, 0), {0, 0, 1}, 30, 0.3f);   // in
+  AddPoint(points, Centre(-3, 0, 0), {0, 0, 1}, 40, 0.4f);  // three voxels off
+  uint64_t removed = 0;
+  const mvs::MvsPoints in = PointsInProxy(points, proxy, 0, &removed);
+  EXPECT_EQ(removed, 2u);
+  ASSERT_EQ(in.size(), 2u);
+  EXPECT_TRUE(in.Validate().empty());
+  EXPECT_EQ(in.cloud.colors[0][0], 10);
+  EXPECT_EQ(in.cloud.colors[1][0], 30);
+  EXPECT_EQ(in.confidence[1], 0.3f);
+  const mvs::MvsPoints near = PointsInProxy(points, proxy, 1, &removed);
+  EXPECT_EQ(removed, 1u);
+  ASSERT_EQ(near.size(), 3u);
+  EXPECT_EQ(near.cloud.colors[1][0], 20);
+  EXPECT_EQ(PointsInProxy(points, proxy, 3).size(), 4u);
+  EXPECT_THROW(PointsInProxy(points, proxy, -1), std::invalid_argument);
+  EXPECT_THROW(PointsInProxy(points, {{Centre(0, 0, 0)}, 0.0}, 0), std::invalid_argument);
+}
+
 TEST(MergeIntoProxy, AHigherMinimumKeepsFewerVoxels) {
   mvs::MvsBounds proxy{{Centre(0, 0, 0)}, kVoxel};
   mvs::MvsPoints points;
