@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <fstream>
 #include <opencv2/imgcodecs.hpp>
 #include <stdexcept>
 
@@ -13,6 +12,7 @@
 #include "core/geometry/mesh_io.h"
 #include "core/geometry/point_cloud_io.h"
 #include "core/traits/plant_traits.h"
+#include "core/util/json_file.h"
 
 namespace avc::bench {
 namespace {
@@ -20,14 +20,6 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::vector<double> kThresholds = {0.001, 0.002, 0.005};
-
-nlohmann::json ReadJsonFile(const fs::path& file) {
-  std::ifstream in(file);
-  if (!in) throw std::runtime_error(file.string() + ": cannot open");
-  nlohmann::json json = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
-  if (json.is_discarded()) throw std::runtime_error(file.string() + ": not valid JSON");
-  return json;
-}
 
 nlohmann::json Scores(const eval::EvalResult& result) {
   nlohmann::json json = nlohmann::json::object();

@@ -3,23 +3,15 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
 #include "core/dataset/exact_pose.h"
+#include "core/util/json_file.h"
 
 namespace avc::dataset {
 namespace fs = std::filesystem;
 namespace {
-
-nlohmann::json ReadJson(const fs::path& file) {
-  std::ifstream in(file);
-  if (!in) throw std::runtime_error(file.string() + ": cannot open");
-  nlohmann::json json = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
-  if (json.is_discarded()) throw std::runtime_error(file.string() + ": not valid JSON");
-  return json;
-}
 
 Eigen::Matrix3d ReadRotation(const nlohmann::json& rows) {
   if (!rows.is_array() || rows.size() != 3) throw std::runtime_error("rotmat must be 3 rows");
@@ -52,7 +44,7 @@ camera::NamedCamera ReadPose(const nlohmann::json& pose, const camera::Intrinsic
 bool IsRomiScan(const fs::path& dir) {
   if (!fs::is_regular_file(dir / "index.json")) return false;
   try {
-    const nlohmann::json json = ReadJson(dir / "index.json");
+    const nlohmann::json json = ReadJsonFile(dir / "index.json");
     return json.contains("camera") && json["camera"].contains("poses");
   } catch (const std::exception&) {
     return false;
@@ -60,7 +52,7 @@ bool IsRomiScan(const fs::path& dir) {
 }
 
 std::vector<camera::NamedCamera> ReadRomiIndex(const fs::path& index_json) {
-  const nlohmann::json json = ReadJson(index_json);
+  const nlohmann::json json = ReadJsonFile(index_json);
   const auto fail = [&](const std::string& what) {
     throw std::runtime_error(fmt::format("{}: {}", index_json.string(), what));
   };

@@ -26,21 +26,23 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// 12 views of the broad-leaf plant at 480x360: small enough for a unit test, enough views for
-// three per surface point.
+// A simulated scan of the broad-leaf plant, rendered once per test program.
+fs::path RenderBroadleaf(const testing::TempDir& dir, int views, int rings, int width, int height) {
+  sim::RenderDatasetOptions options;
+  options.preset = sim::PlantPreset::kBroadleaf;
+  options.views = views;
+  options.rings = rings;
+  options.width = width;
+  options.height = height;
+  options.output = dir / "scan";
+  sim::RenderDataset(options);
+  return options.output;
+}
+
+// 12 views at 480x360: small enough for a unit test, enough views for three per surface point.
 const fs::path& Scan() {
   static testing::TempDir dir("avc-reconstruct");
-  static const fs::path scan = [] {
-    sim::RenderDatasetOptions options;
-    options.preset = sim::PlantPreset::kBroadleaf;
-    options.views = 12;
-    options.rings = 2;
-    options.width = 480;
-    options.height = 360;
-    options.output = dir / "scan";
-    sim::RenderDataset(options);
-    return options.output;
-  }();
+  static const fs::path scan = RenderBroadleaf(dir, 12, 2, 480, 360);
   return scan;
 }
 
@@ -194,16 +196,8 @@ TEST(ReconstructCommand, WritesAScanDirectoryLayoutAndExplainsBadInput) {
 // 24 views at 640x480: the fewest that take the broad-leaf plant through to a mesh and traits.
 const fs::path& SurfacedScan() {
   static testing::TempDir dir("avc-reconstruct-24");
-  static const fs::path scan = [] {
-    sim::RenderDatasetOptions options;
-    options.preset = sim::PlantPreset::kBroadleaf;
-    options.views = 24;
-    options.width = 640;
-    options.height = 480;
-    options.output = dir / "scan";
-    sim::RenderDataset(options);
-    return options.output;
-  }();
+  static const fs::path scan =
+      RenderBroadleaf(dir, 24, sim::RenderDatasetOptions{}.rings, 640, 480);
   return scan;
 }
 
