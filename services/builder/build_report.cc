@@ -1,6 +1,7 @@
 #include "services/builder/build_report.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <sys/resource.h>
 
 #include "core/geometry/mesh_io.h"
@@ -97,6 +98,9 @@ nlohmann::ordered_json BuildReportToJson(const BuildReport& report) {
                      {"plant_fraction", m.plant_fraction}});
   }
   json["masks"] = masks;
+  json["masks_without_plant"] = MaskViewsWhere(report.masks, [](double f) { return f == 0; });
+  json["masks_mostly_plant"] =
+      MaskViewsWhere(report.masks, [](double f) { return f >= kMostlyPlantFraction; });
   json["soil"] = report.soil ? nlohmann::ordered_json(SoilLevelToJson(*report.soil)) : nullptr;
   json["support"] = report.support
                         ? nlohmann::ordered_json{{"top_z_m", report.support->z},
@@ -110,6 +114,32 @@ nlohmann::ordered_json BuildReportToJson(const BuildReport& report) {
   return json;
 }
 
+std::vector<std::string> MaskViewsWhere(const segmentation::MaskSummary& masks,
+                                        const std::function<bool(double)>& test) {
+  std::vector<std::string> views;
+  for (const segmentation::ViewMask& view : masks.views) {
+    if (test(view.plant_fraction)) views.push_back(view.view);
+  }
+  return views;
+}
+
+std::string DescribeMaskProblems(const segmentation::MaskSummary& masks) {
+  std::string text;
+  const auto none = MaskViewsWhere(masks, [](double f) { return f == 0; });
+  if (!none.empty()) {
+    text += fmt::format("warning: {} of {} masks show no plant ({}); left out of the proxy\n",
+                        none.size(), masks.views.size(), fmt::join(none, ", "));
+  }
+  const auto all = MaskViewsWhere(masks, [](double f) { return f >= kMostlyPlantFraction; });
+  if (!all.empty()) {
+    text += fmt::format(
+        "warning: {} of {} masks are at least {:.0f} % plant ({}): the plant is not told from its "
+        "background there, so those views carve nothing; check them or give masks\n",
+        all.size(), masks.views.size(), 100 * kMostlyPlantFraction, fmt::join(all, ", "));
+  }
+  return text;
+}
+
 std::string BuildReportToText(const BuildReport& report) {
   std::string text = fmt::format(
       "{} images, {} points ({:.0f} per image, {}); proxy {:.2f} mm voxels, {} occupied\n",
@@ -120,6 +150,7 @@ std::string BuildReportToText(const BuildReport& report) {
         "merged into the proxy: {} points ({} outside it, {} in voxels with too few)\n",
         report.merged_points, report.outliers_outside_proxy, report.outliers_in_sparse_voxels);
   }
+  text += DescribeMaskProblems(report.masks);
   if (report.support) text += DescribeSupport(*report.support) + "\n";
   if (report.soil) {
     text += fmt::format("soil surface at z = {:.1f} mm (contrast {:.2f}, {} patches)\n",

@@ -5,6 +5,7 @@
 // precision / recall; plus the proxy's size, the masks and the time per stage.
 
 #include <filesystem>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -41,6 +42,15 @@ struct BuildReport {
 BuildReport MakeBuildReport(const Reconstruction& reconstruction, MvsMethod method,
                             const std::filesystem::path& ground_truth_mesh,
                             const Eigen::Matrix3d& ground_truth_to_world);
+
+// A mask at least this much plant does not tell the plant from its background.
+inline constexpr double kMostlyPlantFraction = 0.9;
+
+// The names of the views whose mask's plant fraction passes `test`.
+std::vector<std::string> MaskViewsWhere(const segmentation::MaskSummary& masks,
+                                        const std::function<bool(double)>& test);
+// Warnings (one line each) for masks with no plant and masks almost all plant; empty if none.
+std::string DescribeMaskProblems(const segmentation::MaskSummary& masks);
 
 nlohmann::ordered_json BuildReportToJson(const BuildReport& report);
 // A few lines for a terminal.

@@ -40,6 +40,31 @@ ppr::PlantProxy CarveProxy(const std::vector<dataset::View>& views, const Eigen:
   return proxy;
 }
 
+// The views whose mask shows plant (sharing their pixels and masks). A view with none says
+// nothing about where the plant is, would carve it away wherever it looks, and has nothing for
+// MVS to match: it is left out (the build report names it).
+struct ViewsInUse {
+  std::vector<dataset::View> views;
+  std::vector<uint32_t> set_index;  // of each, in the set
+};
+
+ViewsInUse ViewsWithPlant(const std::vector<dataset::View>& views) {
+  ViewsInUse in_use;
+  for (size_t i = 0; i < views.size(); ++i) {
+    if (cv::countNonZero(views[i].mask) == 0) continue;
+    in_use.views.push_back(views[i]);
+    in_use.set_index.push_back(static_cast<uint32_t>(i));
+  }
+  return in_use;
+}
+
+// MVS points name the views they were given; the products name the set's views.
+void RenumberViews(mvs::MvsPoints& points, const std::vector<uint32_t>& set_index) {
+  for (std::vector<uint32_t>& views : points.views) {
+    for (uint32_t& view : views) view = set_index[view];
+  }
+}
+
 // True when most computed masks separate the plant by its distance from the backdrop's colour,
 // which keeps a pale stage, block or pot as well; excess-green masks leave them out already, and
 // given masks are trusted.
@@ -132,9 +157,11 @@ Reconstruction Reconstruct(dataset::ViewSet& set, const ReconstructOptions& opti
   }
   clock.Finish("masks");
 
-  Eigen::AlignedBox3d box = ppr::BoundsFromViews(set.views);
+  const ViewsInUse in_use = ViewsWithPlant(set.views);
+  const std::vector<dataset::View>& carving = in_use.views;
+  Eigen::AlignedBox3d box = ppr::BoundsFromViews(carving);
   ppr::ProxyOptions proxy_options = options.proxy;
-  ppr::PlantProxy proxy = CarveProxy(set.views, box, proxy_options, report);
+  ppr::PlantProxy proxy = CarveProxy(carving, box, proxy_options, report);
   // Masks that keep everything unlike the backdrop (not the green of foliage) keep what the plant
   // stands on too. The proxy's first level shows it: cut the box at its top and carve again,
   // with the voxels the whole box would have had; then once more on the final voxels, which
@@ -147,12 +174,12 @@ Reconstruction Reconstruct(dataset::ViewSet& set, const ReconstructOptions& opti
     proxy_options.final_voxel_size =
         proxy.voxel_size() / static_cast<double>(1 << options.proxy.resolution_increases);
   }
-  if (support) proxy = CarveProxy(set.views, box, proxy_options, report);
+  if (support) proxy = CarveProxy(carving, box, proxy_options, report);
   for (int i = 0; i < options.proxy.resolution_increases; ++i) proxy.IncreaseResolution();
   if (support) {
     if (auto finer = CutAtSupport(options.support, box, proxy)) {
       support = finer;
-      proxy = CarveProxy(set.views, box, proxy_options, report);
+      proxy = CarveProxy(carving, box, proxy_options, report);
       for (int i = 0; i < options.proxy.resolution_increases; ++i) proxy.IncreaseResolution();
     }
   }
@@ -178,11 +205,14 @@ Reconstruction Reconstruct(dataset::ViewSet& set, const ReconstructOptions& opti
   const auto mvs_progress = [&](const std::string& stage, size_t done, size_t total) {
     report("mvs " + stage, done, total);
   };
+  // Again after the masks were cut to the proxy, which can leave a view without plant.
+  const ViewsInUse matching = ViewsWithPlant(set.views);
   if (options.method == MvsMethod::kPatch) {
-    points = mvs::RunPatchMvs(set.views, proxy.ToMvsBounds(), options.patch, mvs_progress);
+    points = mvs::RunPatchMvs(matching.views, proxy.ToMvsBounds(), options.patch, mvs_progress);
   } else if (options.method == MvsMethod::kPlaneSweep) {
-    points = mvs::RunPlaneSweep(set.views, proxy.ToMvsBounds(), options.sweep, mvs_progress);
+    points = mvs::RunPlaneSweep(matching.views, proxy.ToMvsBounds(), options.sweep, mvs_progress);
   }
+  RenumberViews(points, matching.set_index);
   uint64_t outside_proxy = 0;
   if (options.points_proxy_margin >= 0 && points.size() > 0) {
     points = merge::PointsInProxy(points, proxy.ToMvsBounds(), options.points_proxy_margin,

@@ -123,6 +123,30 @@ TEST(Reconstruct, RefusesSetsWithoutViewsOrPlant) {
   EXPECT_EQ(ParseMvsMethod("plane-sweep"), MvsMethod::kPlaneSweep);
 }
 
+// Masks with no plant would carve the plant away wherever those views look; masks all plant
+// carve nothing. Both are named; the empty ones are left out of the proxy.
+TEST(Reconstruct, NamesAndSurvivesMasksWithNoPlantOrAllPlant) {
+  dataset::ViewSet set = dataset::ReadDataset(Scan());
+  set.views[0].mask = cv::Mat::zeros(set.views[0].image.size(), CV_8UC1);
+  set.views[3].mask = cv::Mat::zeros(set.views[3].image.size(), CV_8UC1);
+  set.views[5].mask = cv::Mat(set.views[5].image.size(), CV_8UC1, cv::Scalar(255));
+  const Reconstruction result = Reconstruct(set, {});
+  EXPECT_GT(result.proxy.Counts().occupied, 1000u);
+  EXPECT_GT(result.points.size(), 1000u);
+  const BuildReport report =
+      MakeBuildReport(result, MvsMethod::kPatch, {}, Eigen::Matrix3d::Identity());
+  const std::string text = BuildReportToText(report);
+  EXPECT_NE(text.find("2 of 12 masks show no plant (view_0000.png, view_0003.png); left out of "
+                      "the proxy"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("1 of 12 masks are at least 90 % plant (view_0005.png)"), std::string::npos)
+      << text;
+  const nlohmann::ordered_json json = BuildReportToJson(report);
+  EXPECT_EQ(json.at("masks_without_plant").size(), 2u);
+  EXPECT_EQ(json.at("masks_mostly_plant").at(0), "view_0005.png");
+}
+
 TEST(ReconstructionOutput, ChoosesAFreshFolderAndNeverOverwritesByAccident) {
   testing::TempDir dir;
   const fs::path previous = fs::current_path();
