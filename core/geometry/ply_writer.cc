@@ -9,6 +9,8 @@ namespace avc::geometry::ply {
 
 Writer::Writer(bool binary) : binary_(binary) {
   bytes_ = binary ? "ply\nformat binary_little_endian 1.0\n" : "ply\nformat ascii 1.0\n";
+  // Every length AVC writes is in metres (datasets in other units are converted at import).
+  AddComment("lengths in metres");
 }
 
 void Writer::AddComment(std::string_view text) {

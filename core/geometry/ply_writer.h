@@ -3,7 +3,8 @@
 // Builds a PLY file in memory: the header from the declared elements and properties, then the
 // records, ascii (values separated by spaces, one record a line, floats in their shortest
 // round-trip form so they read back exactly) or binary little endian. The one PLY writer behind
-// WriteMeshPly (ply_io.cc) and WritePointCloudPly (point_cloud_io.cc). Not part of the public API.
+// WriteMeshPly (ply_io.cc) and WritePointCloudPly (point_cloud_io.cc). Every file says its
+// lengths are in metres (the first comment). Not part of the public API.
 
 #include <bit>
 #include <cstdint>

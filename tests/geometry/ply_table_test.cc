@@ -195,7 +195,8 @@ TEST(PlyWriter, WritesTheDeclaredHeaderAndRecordsInBothFormats) {
     const std::string bytes = writer.TakeBytes();
     const std::string header = std::string("ply\nformat ") +
                                (binary ? "binary_little_endian" : "ascii") +
-                               " 1.0\ncomment hello\nelement vertex 2\nproperty float x\n"
+                               " 1.0\ncomment lengths in metres\ncomment hello\nelement vertex 2\n"
+                               "property float x\n"
                                "property uchar red\nelement face 1\n"
                                "property list uchar int vertex_indices\nend_header\n";
     ASSERT_EQ(bytes.substr(0, header.size()), header);
