@@ -44,6 +44,7 @@ BuildReport MakeBuildReport(const Reconstruction& reconstruction, MvsMethod meth
   report.masks = reconstruction.masks;
   report.soil = reconstruction.soil;
   report.support = reconstruction.support;
+  report.soil_not_found = reconstruction.soil_not_found;
   if (!ground_truth_mesh.empty() && report.points > 0) {
     geometry::Mesh truth = geometry::ReadMesh(ground_truth_mesh);
     const Eigen::Matrix3f to_world = ground_truth_to_world.cast<float>();
@@ -102,6 +103,7 @@ nlohmann::ordered_json BuildReportToJson(const BuildReport& report) {
   json["masks_mostly_plant"] =
       MaskViewsWhere(report.masks, [](double f) { return f >= kMostlyPlantFraction; });
   json["soil"] = report.soil ? nlohmann::ordered_json(SoilLevelToJson(*report.soil)) : nullptr;
+  if (!report.soil) json["soil_not_found"] = report.soil_not_found;
   json["support"] = report.support
                         ? nlohmann::ordered_json{{"top_z_m", report.support->z},
                                                  {"jump", report.support->jump},
@@ -156,8 +158,8 @@ std::string BuildReportToText(const BuildReport& report) {
     text += fmt::format("soil surface at z = {:.1f} mm (contrast {:.2f}, {} patches)\n",
                         report.soil->z * 1e3, report.soil->contrast, report.soil->patches);
   } else {
-    text += report.support ? "soil surface not found: plant height from the support's top\n"
-                           : "soil surface not found: plant height from the proxy's base\n";
+    text += fmt::format("soil surface not found ({}): plant height from the {}\n",
+                        report.soil_not_found, report.support ? "support's top" : "proxy's base");
   }
   if (report.accuracy) {
     const eval::EvalResult& a = *report.accuracy;

@@ -31,6 +31,7 @@ struct BuildReport {
   double peak_memory_mb = 0;  // of this process so far
   segmentation::MaskSummary masks;
   std::optional<SoilLevel> soil;      // where the plant's height is measured from, when found
+  std::string soil_not_found;         // why there is no soil level
   std::optional<SupportTop> support;  // what the proxy was cut at, when found
   // Present when a ground-truth mesh was given.
   std::optional<eval::EvalResult> accuracy;

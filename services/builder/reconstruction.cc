@@ -197,7 +197,10 @@ Reconstruction Reconstruct(dataset::ViewSet& set, const ReconstructOptions& opti
   // On a support the plant's base is its top; the soil search assumes masks that leave the pot
   // and soil out, which these did not.
   std::optional<SoilLevel> soil;
-  if (!support) soil = FindSoilLevel(set.views, proxy.ToMvsBounds(), options.soil);
+  std::string soil_not_found = "not searched on a support";
+  if (!support) {
+    soil = FindSoilLevel(set.views, proxy.ToMvsBounds(), options.soil, &soil_not_found);
+  }
   report("soil", 1, 1);
   clock.Finish("soil");
 
@@ -222,8 +225,10 @@ Reconstruction Reconstruct(dataset::ViewSet& set, const ReconstructOptions& opti
   merge::MergedPoints merged;
   if (points.size() > 0) merged = merge::MergeIntoProxy(points, proxy.ToMvsBounds());
   clock.Finish("merge");
-  return {std::move(proxy), std::move(points),  outside_proxy, std::move(merged),
-          std::move(masks), std::move(timings), soil,          support};
+  return {
+      std::move(proxy), std::move(points),  outside_proxy, std::move(merged),
+      std::move(masks), std::move(timings), soil,          soil ? std::string() : soil_not_found,
+      support};
 }
 
 }  // namespace avc::builder

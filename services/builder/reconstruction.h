@@ -58,6 +58,7 @@ struct Reconstruction {
   std::vector<StageTime> timings;  // wall clock, for reports only (never in the products)
   // The soil surface under the plant, where its height is measured from (soil_level.h).
   std::optional<SoilLevel> soil;
+  std::string soil_not_found;  // why, when soil is empty
   // What the plant stands on when the masks took it for plant; the proxy and masks are cut at
   // its top (support_level.h).
   std::optional<SupportTop> support;

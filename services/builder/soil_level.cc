@@ -208,20 +208,32 @@ void SoilLevelOptions::Validate() const {
 }
 
 std::optional<SoilLevel> FindSoilLevel(const std::vector<dataset::View>& views,
-                                       const mvs::MvsBounds& proxy,
-                                       const SoilLevelOptions& options) {
+                                       const mvs::MvsBounds& proxy, const SoilLevelOptions& options,
+                                       std::string* why_not) {
   options.Validate();
-  if (!options.enabled) return std::nullopt;
+  const auto none = [&](const std::string& reason) -> std::optional<SoilLevel> {
+    if (why_not != nullptr) *why_not = reason;
+    return std::nullopt;
+  };
+  if (!options.enabled) return none("the search is off (soil.enabled)");
   const std::optional<Stem> stem = StemBase(proxy);
-  if (!stem) return std::nullopt;
+  if (!stem) return none("the proxy is empty");
   const std::vector<GreyView> prepared = PrepareViews(views);
-  if (static_cast<int>(prepared.size()) < options.min_views) return std::nullopt;
+  if (static_cast<int>(prepared.size()) < options.min_views) {
+    return none(fmt::format("{} views have a mask and an image; {} needed", prepared.size(),
+                            options.min_views));
+  }
   const std::vector<Eigen::Vector2d> annulus = Annulus(stem->axis, options);
 
   const std::vector<Plane> coarse =
       Sweep(prepared, annulus, stem->base_z - options.search_below,
             stem->base_z + options.search_above, options.coarse_step, options);
-  if (coarse.size() < 3) return std::nullopt;
+  if (coarse.size() < 3) {
+    return none(fmt::format(
+        "{} planes round the proxy's base had {} textured patches, each seen by {} views at "
+        "least {} deg above it (3 such planes needed)",
+        coarse.size(), options.min_patches, options.min_views, options.min_elevation_deg));
+  }
   std::vector<double> disagreements;
   for (const Plane& plane : coarse) disagreements.push_back(plane.disagreement);
   const double typical = UpperMedian(disagreements);
@@ -230,7 +242,12 @@ std::optional<SoilLevel> FindSoilLevel(const std::vector<dataset::View>& views,
                                         around + options.coarse_step, options.fine_step, options);
   const Plane& best = fine.empty() ? Best(coarse) : Best(fine);
   const double contrast = typical > 0.0 ? best.disagreement / typical : 1.0;
-  if (contrast > options.max_contrast) return std::nullopt;
+  if (contrast > options.max_contrast) {
+    return none(fmt::format(
+        "no plane stands out: the best disagrees {:.2f} of the median plane, {:.2f} at most "
+        "(plain or hidden soil)",
+        contrast, options.max_contrast));
+  }
   return SoilLevel{best.z, contrast, best.patches};
 }
 

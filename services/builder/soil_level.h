@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "core/dataset/view.h"
@@ -55,10 +56,12 @@ struct SoilLevel {
 
 // views: undistorted, with plant masks. The stem is taken at the proxy's base: the centroid of its
 // occupied voxels within 10 mm of the lowest. nullopt when disabled, the proxy is empty, too few
-// patches are seen, or no plane stands out. Throws std::invalid_argument for bad options.
+// patches are seen, or no plane stands out; `why_not` (optional) then gets a sentence saying
+// which. Throws std::invalid_argument for bad options.
 std::optional<SoilLevel> FindSoilLevel(const std::vector<dataset::View>& views,
                                        const mvs::MvsBounds& proxy,
-                                       const SoilLevelOptions& options = {});
+                                       const SoilLevelOptions& options = {},
+                                       std::string* why_not = nullptr);
 
 // The soil's height when found.
 inline std::optional<double> SoilZ(const std::optional<SoilLevel>& soil) {

@@ -98,16 +98,25 @@ TEST(SoilLevel, FindsTheTexturedPlaneFromAProxyBaseAboveIt) {
   }
 }
 
-TEST(SoilLevel, APlainPlaneGivesNoLevel) {
-  EXPECT_FALSE(FindSoilLevel(SoilViews(false), StemProxy(0.01)).has_value());
+TEST(SoilLevel, APlainPlaneGivesNoLevelAndSaysWhy) {
+  std::string why;
+  EXPECT_FALSE(FindSoilLevel(SoilViews(false), StemProxy(0.01), {}, &why).has_value());
+  // Plain patches have no say, so no plane gathers enough of them.
+  EXPECT_NE(why.find("0 planes round the proxy's base had 100 textured patches"), std::string::npos)
+      << why;
 }
 
-TEST(SoilLevel, NoProxyOrDisabledGivesNoLevel) {
+TEST(SoilLevel, NoProxyOrDisabledGivesNoLevelAndSaysWhy) {
   const std::vector<dataset::View> views = SoilViews(true);
-  EXPECT_FALSE(FindSoilLevel(views, mvs::MvsBounds{}).has_value());
+  std::string why;
+  EXPECT_FALSE(FindSoilLevel(views, mvs::MvsBounds{}, {}, &why).has_value());
+  EXPECT_EQ(why, "the proxy is empty");
   SoilLevelOptions options;
   options.enabled = false;
-  EXPECT_FALSE(FindSoilLevel(views, StemProxy(0.01), options).has_value());
+  EXPECT_FALSE(FindSoilLevel(views, StemProxy(0.01), options, &why).has_value());
+  EXPECT_EQ(why, "the search is off (soil.enabled)");
+  EXPECT_FALSE(FindSoilLevel({}, StemProxy(0.01), {}, &why).has_value());
+  EXPECT_EQ(why, "0 views have a mask and an image; 3 needed");
 }
 
 TEST(SoilLevel, RoundTripsThroughItsFile) {
