@@ -24,6 +24,7 @@ struct RealBenchArgs {
   std::string reference;  // default: <dataset>/3d/romi_mesh.ply
   std::vector<int> strides = {4, 2, 1};
   double tolerance_px = 6;
+  std::vector<std::string> sets;  // passed to avc reconstruct as --set
   std::string work_dir;
   bool json = false;
 };
@@ -45,9 +46,13 @@ double PowerLawExponent(const std::vector<double>& x, const std::vector<double>&
 
 nlohmann::json RunOne(const RealBenchArgs& args, int stride, const fs::path& output) {
   const fs::path avc = launch::SelfExecutableDir() / "avc";
-  const std::vector<std::string> argv = {avc.string(),  "reconstruct", "--dataset",
-                                         args.dataset,  "--output",    output.string(),
-                                         "--overwrite", "--stride",    std::to_string(stride)};
+  std::vector<std::string> argv = {avc.string(),  "reconstruct", "--dataset",
+                                   args.dataset,  "--output",    output.string(),
+                                   "--overwrite", "--stride",    std::to_string(stride)};
+  for (const std::string& assignment : args.sets) {
+    argv.push_back("--set");
+    argv.push_back(assignment);
+  }
   std::cerr << fmt::format("avc reconstruct --stride {} ...\n", stride);
   const TimedRun run = RunTimed(argv, output.string() + ".log");
   if (run.exit_code != 0) {
@@ -90,6 +95,7 @@ int Run(const RealBenchArgs& args) {
   json["benchmark"] = "real";
   json["dataset"] = args.dataset;
   json["reference"] = reference.string();
+  json["sets"] = args.sets;
   nlohmann::json runs = nlohmann::json::array();
   std::vector<double> views, walls, proxies;
   fs::path full_run;
@@ -149,6 +155,8 @@ int RunRealBenchmark(const std::vector<std::string>& args) {
   app.add_option("--tolerance-px", parsed.tolerance_px,
                  "mask figures: distance (px) within which mask and reference agree")
       ->capture_default_str();
+  app.add_option("--set", parsed.sets,
+                 "SECTION.FIELD=VALUE for avc reconstruct (repeatable), to measure a variant");
   app.add_option("--work-dir", parsed.work_dir, "keep the runs here (default: a temporary folder)");
   app.add_flag("--json", parsed.json, "print one JSON document last");
   if (auto code = ParseBenchmarkArguments(app, args)) return *code;
