@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "core/surface/laplacian_smoothing.h"
+#include "core/surface/mesh_topology.h"
 
 namespace avc::bench {
 namespace {
@@ -15,7 +16,8 @@ using Cell = std::array<int, 3>;
 
 }  // namespace
 
-geometry::Mesh ProxyBoundaryMesh(const mvs::MvsBounds& proxy, int smoothing_iterations) {
+geometry::Mesh ProxyBoundaryMesh(const mvs::MvsBounds& proxy, int smoothing_iterations,
+                                 double inward_voxels) {
   std::set<Cell> occupied;
   for (const Eigen::Vector3f& centre : proxy.occupied_centres) {
     occupied.insert({static_cast<int>(std::floor(centre.x() / proxy.voxel_size)),
@@ -56,6 +58,14 @@ geometry::Mesh ProxyBoundaryMesh(const mvs::MvsBounds& proxy, int smoothing_iter
   surface::SmoothingOptions smoothing;
   smoothing.iterations = smoothing_iterations;
   if (smoothing_iterations > 0) surface::SmoothInterior(mesh, smoothing);
+  if (inward_voxels != 0) {
+    const std::vector<Eigen::Vector3d> normals = surface::VertexNormals(mesh);
+    const double offset = inward_voxels * proxy.voxel_size;
+    for (size_t v = 0; v < mesh.vertices.size(); ++v) {
+      const double length = normals[v].norm();
+      if (length > 0) mesh.vertices[v] -= (offset * normals[v] / length).cast<float>();
+    }
+  }
   return mesh;
 }
 

@@ -11,6 +11,9 @@
 
 namespace avc::bench {
 
-geometry::Mesh ProxyBoundaryMesh(const mvs::MvsBounds& proxy, int smoothing_iterations);
+// `inward_voxels`: the smoothed surface is then moved this many voxel sizes inwards along its
+// normals (the carved hull stands about half a voxel outside a thin organ).
+geometry::Mesh ProxyBoundaryMesh(const mvs::MvsBounds& proxy, int smoothing_iterations,
+                                 double inward_voxels);
 
 }  // namespace avc::bench
