@@ -108,6 +108,54 @@ void CutMasksToProxy(dataset::ViewSet& set, const mvs::MvsBounds& proxy,
   });
 }
 
+// The plant proxy from the views whose masks show plant, cut at the top of a support the masks
+// took for plant (the masks are then cut to the proxy too); its views released, since its
+// resolution is final. Throws std::runtime_error when no voxel survives.
+struct CarvedProxy {
+  ppr::PlantProxy proxy;
+  std::optional<SupportTop> support;
+};
+
+CarvedProxy CarvePlantProxy(dataset::ViewSet& set, const ReconstructOptions& options,
+                            segmentation::MaskSummary& masks,
+                            const std::function<void(const std::string&, size_t, size_t)>& report) {
+  const ViewsInUse in_use = ViewsWithPlant(set.views);
+  const std::vector<dataset::View>& carving = in_use.views;
+  Eigen::AlignedBox3d box = ppr::BoundsFromViews(carving);
+  ppr::ProxyOptions proxy_options = options.proxy;
+  ppr::PlantProxy proxy = CarveProxy(carving, box, proxy_options, report);
+  // Masks that keep everything unlike the backdrop (not the green of foliage) keep what the plant
+  // stands on too. The proxy's first level shows it: cut the box at its top and carve again,
+  // with the voxels the whole box would have had; then once more on the final voxels, which
+  // place the top to a voxel.
+  std::optional<SupportTop> support;
+  if (MasksKeepTheSupport(masks) && CamerasAgreeZIsUp(set.views)) {
+    support = CutAtSupport(options.support, box, proxy);
+  }
+  if (support && proxy_options.final_voxel_size == 0) {
+    proxy_options.final_voxel_size =
+        proxy.voxel_size() / static_cast<double>(1 << options.proxy.resolution_increases);
+  }
+  if (support) proxy = CarveProxy(carving, box, proxy_options, report);
+  for (int i = 0; i < options.proxy.resolution_increases; ++i) proxy.IncreaseResolution();
+  if (support) {
+    if (auto finer = CutAtSupport(options.support, box, proxy)) {
+      support = finer;
+      proxy = CarveProxy(carving, box, proxy_options, report);
+      for (int i = 0; i < options.proxy.resolution_increases; ++i) proxy.IncreaseResolution();
+    }
+  }
+  if (proxy.Counts().occupied == 0) {
+    throw std::runtime_error(fmt::format(
+        "the plant proxy is empty: no voxel is inside the plant masks of at least {} views; the "
+        "masks or the cameras disagree",
+        options.proxy.min_plant_views));
+  }
+  proxy.ReleaseViews();
+  if (support) CutMasksToProxy(set, proxy.ToMvsBounds(), masks);
+  return {std::move(proxy), support};
+}
+
 }  // namespace
 
 std::string MvsMethodName(MvsMethod method) {
@@ -157,40 +205,7 @@ Reconstruction Reconstruct(dataset::ViewSet& set, const ReconstructOptions& opti
   }
   clock.Finish("masks");
 
-  const ViewsInUse in_use = ViewsWithPlant(set.views);
-  const std::vector<dataset::View>& carving = in_use.views;
-  Eigen::AlignedBox3d box = ppr::BoundsFromViews(carving);
-  ppr::ProxyOptions proxy_options = options.proxy;
-  ppr::PlantProxy proxy = CarveProxy(carving, box, proxy_options, report);
-  // Masks that keep everything unlike the backdrop (not the green of foliage) keep what the plant
-  // stands on too. The proxy's first level shows it: cut the box at its top and carve again,
-  // with the voxels the whole box would have had; then once more on the final voxels, which
-  // place the top to a voxel.
-  std::optional<SupportTop> support;
-  if (MasksKeepTheSupport(masks) && CamerasAgreeZIsUp(set.views)) {
-    support = CutAtSupport(options.support, box, proxy);
-  }
-  if (support && proxy_options.final_voxel_size == 0) {
-    proxy_options.final_voxel_size =
-        proxy.voxel_size() / static_cast<double>(1 << options.proxy.resolution_increases);
-  }
-  if (support) proxy = CarveProxy(carving, box, proxy_options, report);
-  for (int i = 0; i < options.proxy.resolution_increases; ++i) proxy.IncreaseResolution();
-  if (support) {
-    if (auto finer = CutAtSupport(options.support, box, proxy)) {
-      support = finer;
-      proxy = CarveProxy(carving, box, proxy_options, report);
-      for (int i = 0; i < options.proxy.resolution_increases; ++i) proxy.IncreaseResolution();
-    }
-  }
-  if (proxy.Counts().occupied == 0) {
-    throw std::runtime_error(fmt::format(
-        "the plant proxy is empty: no voxel is inside the plant masks of at least {} views; the "
-        "masks or the cameras disagree",
-        options.proxy.min_plant_views));
-  }
-  proxy.ReleaseViews();
-  if (support) CutMasksToProxy(set, proxy.ToMvsBounds(), masks);
+  auto [proxy, support] = CarvePlantProxy(set, options, masks, report);
   clock.Finish("proxy");
 
   report("soil", 0, 1);
