@@ -123,7 +123,8 @@ UnitDecision ConvertToMetres(std::vector<camera::NamedCamera>& named, LengthUnit
   std::vector<camera::Camera> cameras;
   for (const auto& entry : named) {
     camera::Camera camera = entry.camera;
-    // Middlebury gives no image size; any size will do to locate the scene.
+    // Middlebury and ROMI give no image size (the image's own is taken later); the optical
+    // axes, which locate the scene, do not depend on it.
     if (camera.intrinsics.width == 0) camera.intrinsics.width = 2 * camera.intrinsics.cx + 1;
     if (camera.intrinsics.height == 0) camera.intrinsics.height = 2 * camera.intrinsics.cy + 1;
     cameras.push_back(camera);
@@ -200,7 +201,7 @@ ViewSet ReadDataset(const fs::path& dir, const ReadOptions& options) {
     cameras = ReadRomiIndex(dir / "index.json");
     images_dir = dir / "undist";
     declared = LengthUnit::kMillimetre;
-    declared_by = "the ROMI layout (index.json, millimetres)";
+    declared_by = "index.json, ROMI's layout";
   } else {
     Fail(dir,
          "no cameras.json (scan directory), cameras.txt + images.txt (COLMAP text model), "
