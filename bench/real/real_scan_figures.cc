@@ -6,7 +6,6 @@
 #include <opencv2/imgcodecs.hpp>
 #include <stdexcept>
 
-#include "bench/real/proxy_surface.h"
 #include "bench/real/reference_silhouette.h"
 #include "core/dataset/dataset_reader.h"
 #include "core/eval/metrics.h"
@@ -14,6 +13,7 @@
 #include "core/geometry/point_cloud_io.h"
 #include "core/ppr/octree_voxels.h"
 #include "core/surface/mesh_topology.h"
+#include "core/surface/thin_organs.h"
 #include "core/traits/plant_traits.h"
 #include "core/util/file_io.h"
 #include "core/util/json_file.h"
@@ -130,9 +130,14 @@ nlohmann::json MeasureRealScan(const fs::path& dataset, const fs::path& output,
   const fs::path proxy_file = output / "ppr.bt";
   const mvs::MvsBounds proxy =
       ppr::OccupiedVoxelsFromBinary(ReadFile(proxy_file), 0.0, proxy_file.string());
+  std::vector<Eigen::Vector3i> voxels;
+  for (const Eigen::Vector3f& centre : proxy.occupied_centres) {
+    voxels.push_back((centre.cast<double>() / proxy.voxel_size).array().floor().cast<int>());
+  }
   json["proxy_surfaces"] = nlohmann::json::array();
   for (double inward : kProxySurfaceInwardVoxels) {
-    const geometry::Mesh proxy_surface = ProxyBoundaryMesh(proxy, kProxySurfaceSmoothing, inward);
+    const geometry::Mesh proxy_surface =
+        surface::VoxelSurface(voxels, voxels, proxy.voxel_size, kProxySurfaceSmoothing, inward);
     const eval::EvalResult proxy_eval = eval::EvaluateMesh(reference, proxy_surface, eval_options);
     int pieces = 0;
     surface::FaceComponents(proxy_surface, &pieces);

@@ -12,6 +12,7 @@
 #include "core/surface/image_evidence.h"
 #include "core/surface/surface_options.h"
 #include "core/surface/surface_reconstruction.h"
+#include "core/surface/thin_organs.h"
 #include "core/traits/plant_traits.h"
 
 namespace avc::surfacer {
@@ -19,6 +20,8 @@ namespace avc::surfacer {
 struct SurfacerOptions {
   surface::SurfaceOptions surface;
   traits::TraitOptions traits;
+  // Used where the plant proxy is at hand (SurfaceModel): off by default.
+  surface::ThinOrganOptions thin_organs;
 };
 
 struct SurfacerResult {

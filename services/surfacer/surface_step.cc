@@ -2,13 +2,16 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
 #include "core/geometry/mesh_io.h"
 #include "core/ppr/octree_voxels.h"
 #include "core/stage/stage_names.h"
+#include "core/surface/mesh_topology.h"
 #include "core/surface/surface_images_io.h"
+#include "core/traits/plant_traits.h"
 #include "core/traits/traits_writer.h"
 #include "core/util/file_io.h"
 #include "services/builder/soil_level.h"
@@ -42,6 +45,20 @@ nlohmann::ordered_json SurfaceSummary(const surface::SurfaceReport& made) {
           {"warnings", made.warnings}};
 }
 
+// Stems and siliques from the proxy's thin parts (core/surface/thin_organs.h), labelled as one
+// more cluster; the traits and the summary are measured again on the whole mesh.
+void AddThinOrganSurfaces(SurfacerResult& surface, const mvs::MvsBounds& proxy,
+                          const SurfacerOptions& options) {
+  int32_t label = 0;
+  for (int32_t existing : surface.mesh.face_labels) label = std::max(label, existing + 1);
+  const size_t added = surface::AddThinOrgans(surface.mesh, proxy.occupied_centres,
+                                              proxy.voxel_size, options.thin_organs, label);
+  if (added == 0) return;
+  surface.traits = traits::MeasureTraits(surface.mesh, options.traits);
+  surface.report.faces = surface.mesh.faces.size();
+  surface::FaceComponents(surface.mesh, &surface.report.components);
+}
+
 }  // namespace
 
 void SurfaceModel(const fs::path& model_dir, const fs::path& output_dir,
@@ -53,13 +70,15 @@ void SurfaceModel(const fs::path& model_dir, const fs::path& output_dir,
   // Plant height from the soil surface the builder found, else from the proxy's base.
   SurfacerOptions options = given;
   const fs::path proxy_file = model_dir / "ppr.bt";
+  const mvs::MvsBounds proxy =
+      ppr::OccupiedVoxelsFromBinary(ReadFile(proxy_file), 0.0, proxy_file.string());
   options.traits.ground_z =
-      PlantGroundZ(builder::SoilZ(builder::ReadSoilLevel(model_dir / "soil.json")),
-                   ppr::OccupiedVoxelsFromBinary(ReadFile(proxy_file), 0.0, proxy_file.string()));
-  const SurfacerResult surface = SurfaceClusters(clusters, options, &images);
+      PlantGroundZ(builder::SoilZ(builder::ReadSoilLevel(model_dir / "soil.json")), proxy);
+  SurfacerResult surface = SurfaceClusters(clusters, options, &images);
   if (!surface.problem.empty()) {
     throw std::runtime_error("no surface could be made: " + surface.problem);
   }
+  if (options.thin_organs.enabled) AddThinOrganSurfaces(surface, proxy, options);
   geometry::WriteMeshPly(output_dir / "mesh.ply", surface.mesh);
   traits::WriteTraitFiles(surface.traits, output_dir.string());
   WriteFileAtomically(output_dir / "surface.json", SurfaceSummary(surface.report).dump(2) + "\n");

@@ -12,10 +12,27 @@ using Table = OptionTable<SurfacerOptions>;
 std::string Problem(const SurfacerOptions& options) {
   try {
     options.surface.Validate();
+    options.thin_organs.Validate();
   } catch (const std::invalid_argument& e) {
     return e.what();
   }
   return "";
+}
+
+void AddThinOrgans(Table& table) {
+  table
+      .Add("thin_organs.enabled", [](auto& o) -> auto& { return o.thin_organs.enabled; },
+           {"", "surface the proxy's thin parts (stems, siliques) instead of their few points"})
+      .Add("thin_organs.core_depth", [](auto& o) -> auto& { return o.thin_organs.core_depth; },
+           {"voxels", "a voxel this deep inside the proxy is part of a bulky core", 1, 1000})
+      .Add("thin_organs.core_reach", [](auto& o) -> auto& { return o.thin_organs.core_reach; },
+           {"voxels", "thin parts lie farther than this from any core", 0, 1000})
+      .Add("thin_organs.inward_voxels",
+           [](auto& o) -> auto& { return o.thin_organs.inward_voxels; },
+           {"voxels", "the thin parts' surface is moved this far in (the hull's margin)", 0, 0.99})
+      .Add("thin_organs.smoothing_iterations",
+           [](auto& o) -> auto& { return o.thin_organs.smoothing_iterations; },
+           {"pairs", "Taubin pairs smoothing the thin parts' voxel surface", 0, 1000});
 }
 
 void AddScales(Table& table) {
@@ -146,6 +163,7 @@ Table MakeTable() {
   AddGrowth(table);
   AddModifications(table);
   AddMerging(table);
+  AddThinOrgans(table);
   return table;
 }
 
