@@ -22,7 +22,7 @@ std::string Problem(const SurfacerOptions& options) {
 void AddThinOrgans(Table& table) {
   table
       .Add("thin_organs.enabled", [](auto& o) -> auto& { return o.thin_organs.enabled; },
-           {"", "surface the proxy's thin parts (stems, siliques) instead of their few points"})
+           {"", "surface the proxy's thin parts (stems, siliques; not for broad leaves) from it"})
       .Add("thin_organs.core_depth", [](auto& o) -> auto& { return o.thin_organs.core_depth; },
            {"voxels", "a voxel this deep inside the proxy is part of a bulky core", 1, 1000})
       .Add("thin_organs.core_reach", [](auto& o) -> auto& { return o.thin_organs.core_reach; },
