@@ -9,8 +9,8 @@
 
 #include "core/dataset/view_transforms.h"
 #include "core/dataset/world_up.h"
+#include "core/mvs/depth_range.h"
 #include "core/ppr/proxy_bounds.h"
-#include "core/ppr/proxy_silhouette.h"
 
 namespace avc::builder {
 namespace {
@@ -102,7 +102,7 @@ void CutMasksToProxy(dataset::ViewSet& set, const mvs::MvsBounds& proxy,
                      segmentation::MaskSummary& summary) {
   tbb::parallel_for(size_t{0}, set.views.size(), [&](size_t i) {
     dataset::View& view = set.views[i];
-    view.mask &= ppr::ProxySilhouette(proxy, view.camera);
+    view.mask &= mvs::ComputeDepthRange(view.camera, proxy, 0).far_depth > 0;
     summary.views[i].plant_fraction =
         static_cast<double>(cv::countNonZero(view.mask)) / static_cast<double>(view.mask.total());
   });
@@ -206,6 +206,7 @@ Reconstruction Reconstruct(dataset::ViewSet& set, const ReconstructOptions& opti
   clock.Finish("masks");
 
   auto [proxy, support] = CarvePlantProxy(set, options, masks, report);
+  const mvs::MvsBounds bounds = proxy.ToMvsBounds();
   clock.Finish("proxy");
 
   report("soil", 0, 1);
@@ -214,7 +215,7 @@ Reconstruction Reconstruct(dataset::ViewSet& set, const ReconstructOptions& opti
   std::optional<SoilLevel> soil;
   std::string soil_not_found = "not searched on a support";
   if (!support) {
-    soil = FindSoilLevel(set.views, proxy.ToMvsBounds(), options.soil, &soil_not_found);
+    soil = FindSoilLevel(set.views, bounds, options.soil, &soil_not_found);
   }
   report("soil", 1, 1);
   clock.Finish("soil");
@@ -226,19 +227,18 @@ Reconstruction Reconstruct(dataset::ViewSet& set, const ReconstructOptions& opti
   // Again after the masks were cut to the proxy, which can leave a view without plant.
   const ViewsInUse matching = ViewsWithPlant(set.views);
   if (options.method == MvsMethod::kPatch) {
-    points = mvs::RunPatchMvs(matching.views, proxy.ToMvsBounds(), options.patch, mvs_progress);
+    points = mvs::RunPatchMvs(matching.views, bounds, options.patch, mvs_progress);
   } else if (options.method == MvsMethod::kPlaneSweep) {
-    points = mvs::RunPlaneSweep(matching.views, proxy.ToMvsBounds(), options.sweep, mvs_progress);
+    points = mvs::RunPlaneSweep(matching.views, bounds, options.sweep, mvs_progress);
   }
   RenumberViews(points, matching.set_index);
   uint64_t outside_proxy = 0;
   if (options.points_proxy_margin >= 0 && points.size() > 0) {
-    points = merge::PointsInProxy(points, proxy.ToMvsBounds(), options.points_proxy_margin,
-                                  &outside_proxy);
+    points = merge::PointsInProxy(points, bounds, options.points_proxy_margin, &outside_proxy);
   }
   clock.Finish("mvs");
   merge::MergedPoints merged;
-  if (points.size() > 0) merged = merge::MergeIntoProxy(points, proxy.ToMvsBounds());
+  if (points.size() > 0) merged = merge::MergeIntoProxy(points, bounds);
   clock.Finish("merge");
   return {
       std::move(proxy), std::move(points),  outside_proxy, std::move(merged),

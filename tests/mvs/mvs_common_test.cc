@@ -98,6 +98,23 @@ TEST(DepthRange, CoversTheVoxelsAndBracketsTheirDepth) {
   EXPECT_EQ(cv::countNonZero(ComputeDepthRange(LookingDownZ(0), MvsBounds{}, 0).far_depth), 0);
 }
 
+// Its coverage is the proxy's silhouette, which the builder cuts masks to: each voxel covers its
+// projected footprint and nothing behind the camera is drawn.
+TEST(DepthRange, CoversEachVoxelsFootprintOnlyInFrontOfTheCamera) {
+  camera::Camera camera;
+  camera.intrinsics = {200, 100, 100, 100, 99.5, 49.5, {}};  // at the origin, looking along +z
+  // A 10 mm voxel 1 m ahead projects to a 1 px square; its bounding sphere to about 1.7 px.
+  const MvsBounds proxy{{Eigen::Vector3f(0, 0, 1), Eigen::Vector3f(0.2f, 0, 1)}, 0.01};
+  const DepthRange range = ComputeDepthRange(camera, proxy, 0);
+  EXPECT_TRUE(range.Covers(100, 50));
+  EXPECT_TRUE(range.Covers(99, 49));
+  EXPECT_TRUE(range.Covers(120, 50));  // the second voxel, 20 px to the right
+  EXPECT_FALSE(range.Covers(110, 50));
+  EXPECT_LE(cv::countNonZero(range.far_depth), 2 * 16);
+  const MvsBounds behind{{Eigen::Vector3f(0, 0, -1), Eigen::Vector3f(0, 0, 0.001f)}, 0.01};
+  EXPECT_EQ(cv::countNonZero(ComputeDepthRange(camera, behind, 0).far_depth), 0);
+}
+
 TEST(OccupancyLookup, FindsVoxelsAndTheirDilation) {
   MvsBounds bounds;
   bounds.voxel_size = 0.002;
