@@ -115,22 +115,27 @@ LengthUnit DeclaredScanUnit(const fs::path& cameras_json) {
   }
 }
 
+// The cameras alone, for the unit and orientation decisions. Middlebury and ROMI give no image
+// size (the image's own is taken later); the optical axes these decisions use do not depend on
+// it, so a size round the principal point stands in.
+std::vector<camera::Camera> CamerasOf(const std::vector<camera::NamedCamera>& named) {
+  std::vector<camera::Camera> cameras;
+  for (const auto& entry : named) {
+    camera::Camera camera = entry.camera;
+    if (camera.intrinsics.width == 0) camera.intrinsics.width = 2 * camera.intrinsics.cx + 1;
+    if (camera.intrinsics.height == 0) camera.intrinsics.height = 2 * camera.intrinsics.cy + 1;
+    cameras.push_back(camera);
+  }
+  return cameras;
+}
+
 // Decides the dataset's unit and converts the cameras to metres (x_cam = R X + t: scaling the
 // world scales t).
 UnitDecision ConvertToMetres(std::vector<camera::NamedCamera>& named, LengthUnit requested,
                              LengthUnit declared, const std::string& declared_by,
                              const fs::path& dir) {
-  std::vector<camera::Camera> cameras;
-  for (const auto& entry : named) {
-    camera::Camera camera = entry.camera;
-    // Middlebury and ROMI give no image size (the image's own is taken later); the optical
-    // axes, which locate the scene, do not depend on it.
-    if (camera.intrinsics.width == 0) camera.intrinsics.width = 2 * camera.intrinsics.cx + 1;
-    if (camera.intrinsics.height == 0) camera.intrinsics.height = 2 * camera.intrinsics.cy + 1;
-    cameras.push_back(camera);
-  }
   const UnitDecision decision =
-      DecideLengthUnit(cameras, requested, declared, declared_by, dir.string());
+      DecideLengthUnit(CamerasOf(named), requested, declared, declared_by, dir.string());
   const double scale = MetresPerUnit(decision.unit);
   for (auto& entry : named) entry.camera.T_cam_world.translation() *= scale;
   return decision;
@@ -138,9 +143,7 @@ UnitDecision ConvertToMetres(std::vector<camera::NamedCamera>& named, LengthUnit
 
 // Turns the world so that the cameras' up is +z, recording the turn in the set.
 void TurnUpright(std::vector<camera::NamedCamera>& named, ViewSet& set) {
-  std::vector<camera::Camera> cameras;
-  for (const auto& entry : named) cameras.push_back(entry.camera);
-  const std::optional<UprightTurn> turn = FindUprightTurn(cameras);
+  const std::optional<UprightTurn> turn = FindUprightTurn(CamerasOf(named));
   if (!turn) return;
   // x_cam = R X + t with X = Q^T X': the pose becomes [R Q^T | t].
   for (auto& entry : named) {

@@ -37,6 +37,13 @@ struct Accumulator {
   uint32_t count = 0;
 };
 
+void CheckVoxelSize(const mvs::MvsBounds& proxy, const char* who) {
+  if (!(std::isfinite(proxy.voxel_size) && proxy.voxel_size > 0)) {
+    throw std::invalid_argument(
+        fmt::format("{}: voxel size {} must be positive", who, proxy.voxel_size));
+  }
+}
+
 std::unordered_set<Key, KeyHash> OccupiedKeys(const mvs::MvsBounds& proxy) {
   std::unordered_set<Key, KeyHash> keys;
   keys.reserve(proxy.occupied_centres.size());
@@ -56,10 +63,7 @@ std::unordered_set<Key, KeyHash> OccupiedKeys(const mvs::MvsBounds& proxy) {
 
 mvs::MvsPoints PointsInProxy(const mvs::MvsPoints& points, const mvs::MvsBounds& proxy,
                              int margin_voxels, uint64_t* removed) {
-  if (!(std::isfinite(proxy.voxel_size) && proxy.voxel_size > 0)) {
-    throw std::invalid_argument(
-        fmt::format("PointsInProxy: voxel size {} must be positive", proxy.voxel_size));
-  }
+  CheckVoxelSize(proxy, "PointsInProxy");
   if (margin_voxels < 0) throw std::invalid_argument("PointsInProxy: negative margin");
   std::unordered_set<Key, KeyHash> near = OccupiedKeys(proxy);
   if (margin_voxels > 0) {
@@ -90,10 +94,7 @@ mvs::MvsPoints PointsInProxy(const mvs::MvsPoints& points, const mvs::MvsBounds&
 
 MergedPoints MergeIntoProxy(const mvs::MvsPoints& points, const mvs::MvsBounds& proxy,
                             const MergeOptions& options) {
-  if (!(std::isfinite(proxy.voxel_size) && proxy.voxel_size > 0)) {
-    throw std::invalid_argument(
-        fmt::format("MergeIntoProxy: voxel size {} must be positive", proxy.voxel_size));
-  }
+  CheckVoxelSize(proxy, "MergeIntoProxy");
   if (options.min_points < 1) {
     throw std::invalid_argument("MergeIntoProxy: min_points must be at least 1");
   }

@@ -99,9 +99,8 @@ nlohmann::ordered_json BuildReportToJson(const BuildReport& report) {
                      {"plant_fraction", m.plant_fraction}});
   }
   json["masks"] = masks;
-  json["masks_without_plant"] = MaskViewsWhere(report.masks, [](double f) { return f == 0; });
-  json["masks_mostly_plant"] =
-      MaskViewsWhere(report.masks, [](double f) { return f >= kMostlyPlantFraction; });
+  json["masks_without_plant"] = MasksWithoutPlant(report.masks);
+  json["masks_mostly_plant"] = MasksMostlyPlant(report.masks);
   json["soil"] = report.soil ? nlohmann::ordered_json(SoilLevelToJson(*report.soil)) : nullptr;
   if (!report.soil) json["soil_not_found"] = report.soil_not_found;
   json["support"] = report.support
@@ -125,14 +124,22 @@ std::vector<std::string> MaskViewsWhere(const segmentation::MaskSummary& masks,
   return views;
 }
 
+std::vector<std::string> MasksWithoutPlant(const segmentation::MaskSummary& masks) {
+  return MaskViewsWhere(masks, [](double f) { return f == 0; });
+}
+
+std::vector<std::string> MasksMostlyPlant(const segmentation::MaskSummary& masks) {
+  return MaskViewsWhere(masks, [](double f) { return f >= kMostlyPlantFraction; });
+}
+
 std::string DescribeMaskProblems(const segmentation::MaskSummary& masks) {
   std::string text;
-  const auto none = MaskViewsWhere(masks, [](double f) { return f == 0; });
+  const auto none = MasksWithoutPlant(masks);
   if (!none.empty()) {
     text += fmt::format("warning: {} of {} masks show no plant ({}); left out of the proxy\n",
                         none.size(), masks.views.size(), fmt::join(none, ", "));
   }
-  const auto all = MaskViewsWhere(masks, [](double f) { return f >= kMostlyPlantFraction; });
+  const auto all = MasksMostlyPlant(masks);
   if (!all.empty()) {
     text += fmt::format(
         "warning: {} of {} masks are at least {:.0f} % plant ({}): the plant is not told from its "

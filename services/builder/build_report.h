@@ -50,6 +50,9 @@ inline constexpr double kMostlyPlantFraction = 0.9;
 // The names of the views whose mask's plant fraction passes `test`.
 std::vector<std::string> MaskViewsWhere(const segmentation::MaskSummary& masks,
                                         const std::function<bool(double)>& test);
+// ... that show no plant; that are at least kMostlyPlantFraction plant.
+std::vector<std::string> MasksWithoutPlant(const segmentation::MaskSummary& masks);
+std::vector<std::string> MasksMostlyPlant(const segmentation::MaskSummary& masks);
 // Warnings (one line each) for masks with no plant and masks almost all plant; empty if none.
 std::string DescribeMaskProblems(const segmentation::MaskSummary& masks);
 
