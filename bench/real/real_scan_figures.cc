@@ -17,6 +17,7 @@
 #include "core/traits/plant_traits.h"
 #include "core/util/file_io.h"
 #include "core/util/json_file.h"
+#include "core/util/upper_median.h"
 
 namespace avc::bench {
 namespace {
@@ -39,13 +40,6 @@ nlohmann::json Scores(const eval::EvalResult& result) {
   return json;
 }
 
-double Median(std::vector<double> values) {
-  if (values.empty()) return 0;
-  auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-  std::nth_element(values.begin(), middle, values.end());
-  return *middle;
-}
-
 nlohmann::json MaskFigures(const dataset::ViewSet& set, const fs::path& output,
                            const geometry::Mesh& reference, double tolerance_px) {
   nlohmann::json views = nlohmann::json::array();
@@ -65,10 +59,10 @@ nlohmann::json MaskFigures(const dataset::ViewSet& set, const fs::path& output,
     fraction.push_back(figures.plant_fraction);
   }
   return {{"tolerance_px", tolerance_px},
-          {"plant_fraction_median", Median(fraction)},
-          {"off_reference_median", Median(off)},
+          {"plant_fraction_median", UpperMedian(fraction)},
+          {"off_reference_median", UpperMedian(off)},
           {"off_reference_max", *std::max_element(off.begin(), off.end())},
-          {"reference_covered_median", Median(covered)},
+          {"reference_covered_median", UpperMedian(covered)},
           {"reference_covered_min", *std::min_element(covered.begin(), covered.end())},
           {"views", views}};
 }

@@ -2,10 +2,11 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 #include "core/camera/axes_meeting_point.h"
+#include "core/util/upper_median.h"
 
 namespace avc::dataset {
 namespace {
@@ -24,9 +25,7 @@ double MedianCameraDistance(const std::vector<camera::Camera>& cameras) {
   for (const camera::Camera& camera : cameras) {
     distances.push_back((camera.Centre() - centre).norm());
   }
-  auto middle = distances.begin() + static_cast<std::ptrdiff_t>(distances.size() / 2);
-  std::nth_element(distances.begin(), middle, distances.end());
-  return *middle;
+  return UpperMedian(std::move(distances));
 }
 
 bool Plausible(double distance, LengthUnit unit) {

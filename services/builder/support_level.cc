@@ -2,10 +2,11 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <cmath>
 #include <map>
 #include <stdexcept>
+
+#include "core/util/upper_median.h"
 
 namespace avc::builder {
 
@@ -33,10 +34,7 @@ std::optional<SupportTop> FindSupportTop(const std::vector<Eigen::Vector3f>& occ
   for (auto slice = slices.rbegin(); slice != slices.rend(); ++slice) {
     const double count = slice->second;
     if (static_cast<int>(above.size()) >= options.min_plant_slices) {
-      std::vector<double> sorted = above;
-      auto middle = sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2);
-      std::nth_element(sorted.begin(), middle, sorted.end());
-      const double jump = count / *middle;
+      const double jump = count / UpperMedian(above);
       const double mass = at_or_below / total;
       if (jump >= options.min_jump && mass >= options.min_mass_fraction) {
         return SupportTop{(static_cast<double>(slice->first) + 1) * voxel_size, jump, mass};
