@@ -17,6 +17,7 @@
 #include "core/cluster/reassignment.h"
 #include "core/cluster/sheet_split.h"
 #include "core/cluster/spectral_cut.h"
+#include "core/util/validation.h"
 
 namespace avc::cluster {
 namespace {
@@ -44,7 +45,21 @@ std::vector<Eigen::Vector3f> CheckedNormals(const PointSet& set) {
   return unit;
 }
 
-void CheckOptions(const ClusterOptions& o) {
+bool IsFlat(const PrincipalAxes& axes, double noise_tolerance, double flatness_ratio) {
+  const double deviation = axes.PlaneDeviation();
+  if (deviation <= noise_tolerance) return true;
+  const double mid = std::sqrt(std::max(0.0, axes.eigenvalues[1]));
+  return deviation <= flatness_ratio * mid;
+}
+
+}  // namespace
+
+std::string ClusterOptions::Validate() const {
+  const ClusterOptions& o = *this;
+  FirstProblem problem;
+  const auto Require = [&problem](bool ok, const std::string& what) {
+    problem.Require(ok, "ClusterOptions: " + what);
+  };
   Require(std::isfinite(o.spacing) && std::isfinite(o.noise), "spacing and noise must be finite");
   Require(o.link_factor > 0 && o.bin_factor > 0 && o.noise_factor >= 0 && o.flatness_ratio >= 0 &&
               o.min_normal_gain >= 0,
@@ -69,20 +84,12 @@ void CheckOptions(const ClusterOptions& o) {
               std::isfinite(o.max_sheet_edge_bias) && o.max_sheet_edge_bias >= 0,
           "sheet_smoothing_factor, sheet_bend_factor and max_sheet_edge_bias must be finite and "
           ">= 0");
+  return problem.text();
 }
-
-bool IsFlat(const PrincipalAxes& axes, double noise_tolerance, double flatness_ratio) {
-  const double deviation = axes.PlaneDeviation();
-  if (deviation <= noise_tolerance) return true;
-  const double mid = std::sqrt(std::max(0.0, axes.eigenvalues[1]));
-  return deviation <= flatness_ratio * mid;
-}
-
-}  // namespace
 
 Assignment ClusterPlant(const PointSet& set, const ClusterOptions& options, ClusterReport* report) {
   const std::vector<Eigen::Vector3f> normals = CheckedNormals(set);
-  CheckOptions(options);
+  RequireValid(options);
   const std::vector<Eigen::Vector3f>& points = set.points;
 
   ClusterReport local;

@@ -36,6 +36,7 @@
 // smallest point index.
 
 #include <cstddef>
+#include <string>
 
 #include "core/cluster/connected_components.h"
 #include "core/cluster/point_set.h"
@@ -113,6 +114,9 @@ struct ClusterOptions {
   double sheet_smoothing_factor = 4.0;
   double sheet_bend_factor = 3.0;
   double max_sheet_edge_bias = 0.15;
+
+  // Empty when usable; else a sentence naming the bad fields.
+  std::string Validate() const;
 };
 
 struct ClusterReport {

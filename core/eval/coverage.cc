@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "core/eval/triangle_tree.h"
+#include "core/util/validation.h"
 
 namespace avc::eval {
 namespace {
@@ -30,19 +31,18 @@ bool InsideImage(const camera::Intrinsics& intrinsics, const Eigen::Vector2d& pi
 
 }  // namespace
 
-void CoverageOptions::Validate() const {
+std::string CoverageOptions::Validate() const {
   if (min_views < 1) {
-    throw std::invalid_argument(
-        fmt::format("coverage: min_views {} must be at least 1", min_views));
+    return fmt::format("coverage: min_views {} must be at least 1", min_views);
   }
   if (!(max_grazing_deg > 0 && max_grazing_deg <= 90)) {
-    throw std::invalid_argument(
-        fmt::format("coverage: max grazing angle {} deg must be in (0, 90]", max_grazing_deg));
+    return fmt::format("coverage: max grazing angle {} deg must be in (0, 90]", max_grazing_deg);
   }
   if (!(occlusion_epsilon >= 0) || !std::isfinite(occlusion_epsilon)) {
-    throw std::invalid_argument(fmt::format(
-        "coverage: occlusion epsilon {} must be non-negative and finite", occlusion_epsilon));
+    return fmt::format("coverage: occlusion epsilon {} must be non-negative and finite",
+                       occlusion_epsilon);
   }
+  return {};
 }
 
 void ValidateCamera(const camera::Camera& camera, const std::string& what) {
@@ -66,7 +66,7 @@ CoverageModel::CoverageModel(const geometry::Mesh& ground_truth, double samples_
 CoverageModel::CoverageModel(const geometry::Mesh& ground_truth, SurfaceSamples samples,
                              const CoverageOptions& options)
     : face_labels_(ground_truth.face_labels), samples_(std::move(samples)), options_(options) {
-  options_.Validate();
+  RequireValid(options_);
   tree_ = std::make_unique<TriangleTree>(ground_truth, "ground truth mesh");
   if (samples_.normals.size() != samples_.size() || samples_.faces.size() != samples_.size()) {
     throw std::invalid_argument(fmt::format(

@@ -26,8 +26,8 @@ struct CoverageOptions {
   // never counts as an occluder; far below any leaf thickness.
   double occlusion_epsilon = 1e-5;
 
-  // Throws std::invalid_argument naming the bad field.
-  void Validate() const;
+  // Empty when valid; else a sentence naming the bad field.
+  std::string Validate() const;
 };
 
 struct OrganCoverage {

@@ -15,6 +15,7 @@
 #include "core/eval/report_plot.h"
 #include "core/geometry/mesh_io.h"
 #include "core/geometry/point_cloud_io.h"
+#include "core/util/validation.h"
 
 namespace avc::eval {
 namespace {
@@ -104,11 +105,11 @@ nlohmann::json RunEvalCommand(const EvalCommandOptions& options) {
   eval_options.thresholds = options.thresholds;
   eval_options.samples_per_m2 = options.samples_per_m2;
   eval_options.seed = options.seed;
-  eval_options.Validate();
+  RequireValid(eval_options);
   CoverageOptions coverage_options;
   coverage_options.min_views = options.min_views;
   coverage_options.max_grazing_deg = options.max_grazing_deg;
-  coverage_options.Validate();
+  RequireValid(coverage_options);
   // Read the cameras first: a bad file should not wait for the evaluation.
   const std::vector<camera::Camera> cameras =
       options.cameras.empty() ? std::vector<camera::Camera>() : ReadCameras(options.cameras);

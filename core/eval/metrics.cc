@@ -13,6 +13,7 @@
 
 #include "core/eval/nearest_point_index.h"
 #include "core/eval/triangle_tree.h"
+#include "core/util/validation.h"
 
 namespace avc::eval {
 namespace {
@@ -164,25 +165,26 @@ EvalResult Evaluate(const geometry::Mesh& gt, const std::vector<Eigen::Vector3d>
 
 }  // namespace
 
-void EvalOptions::Validate() const {
-  if (thresholds.empty()) throw std::invalid_argument("evaluation: no distance thresholds given");
+std::string EvalOptions::Validate() const {
+  if (thresholds.empty()) return "evaluation: no distance thresholds given";
   for (double threshold : thresholds) {
     if (!(threshold > 0) || !std::isfinite(threshold)) {
-      throw std::invalid_argument(
-          fmt::format("evaluation: threshold {} must be positive and finite (metres)", threshold));
+      return fmt::format("evaluation: threshold {} must be positive and finite (metres)",
+                         threshold);
     }
   }
   if (!(samples_per_m2 > 0) || !std::isfinite(samples_per_m2)) {
-    throw std::invalid_argument(
-        fmt::format("evaluation: samples per m^2 {} must be positive and finite", samples_per_m2));
+    return fmt::format("evaluation: samples per m^2 {} must be positive and finite",
+                       samples_per_m2);
   }
-  if (max_samples == 0) throw std::invalid_argument("evaluation: max_samples must be positive");
+  if (max_samples == 0) return "evaluation: max_samples must be positive";
+  return {};
 }
 
 EvalResult EvaluatePointCloud(const geometry::Mesh& ground_truth,
                               const geometry::PointCloud& reconstruction,
                               const EvalOptions& options) {
-  options.Validate();
+  RequireValid(options);
   if (const std::string problem = reconstruction.Validate(); !problem.empty()) {
     throw std::invalid_argument("reconstruction point cloud: " + problem);
   }
@@ -201,7 +203,7 @@ EvalResult EvaluatePointCloud(const geometry::Mesh& ground_truth,
 
 EvalResult EvaluateMesh(const geometry::Mesh& ground_truth, const geometry::Mesh& reconstruction,
                         const EvalOptions& options) {
-  options.Validate();
+  RequireValid(options);
   const TriangleTree tree(reconstruction, "reconstruction mesh");
   EvalResult result;
   result.reconstruction_is_mesh = true;

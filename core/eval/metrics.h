@@ -30,8 +30,8 @@ struct EvalOptions {
   // Refuse to draw more samples than this (a millimetre file read as metres draws 1e6× more).
   size_t max_samples = 5'000'000;
 
-  // Throws std::invalid_argument naming the bad field.
-  void Validate() const;
+  // Empty when valid; else a sentence naming the bad field.
+  std::string Validate() const;
 };
 
 // P(τ): fraction of reconstruction points within τ of the ground truth; R(τ): fraction of

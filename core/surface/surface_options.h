@@ -109,8 +109,8 @@ struct SurfaceOptions {
   // Connected pieces of fewer faces than this are dropped at the end (stray fragments).
   int min_component_faces = 3;
 
-  // Throws std::invalid_argument naming the bad field.
-  void Validate() const;
+  // Empty when valid; else a sentence naming the bad field.
+  std::string Validate() const;
 };
 
 // The distances in force for one run (m): options resolved against the spacing.

@@ -16,6 +16,7 @@
 #include "core/surface/laplacian_smoothing.h"
 #include "core/surface/mesh_topology.h"
 #include "core/surface/triangulate_cell.h"
+#include "core/util/validation.h"
 
 namespace avc::surface {
 namespace {
@@ -210,7 +211,7 @@ geometry::Mesh MergeCells(const std::vector<Cell>& cells, const SurfaceOptions& 
 
 SurfaceResult ReconstructSurface(const ClusteredPoints& input, const SurfaceOptions& options,
                                  const SurfaceImages* images) {
-  options.Validate();
+  RequireValid(options);
   SurfaceResult result;
   SurfaceReport& report = result.report;
   report.input_points = input.cloud.size();

@@ -11,6 +11,7 @@
 
 #include "core/surface/laplacian_smoothing.h"
 #include "core/surface/mesh_topology.h"
+#include "core/util/validation.h"
 
 namespace avc::surface {
 namespace {
@@ -64,20 +65,22 @@ std::map<Cell, int> Depths(const std::set<Cell>& occupied) {
 
 }  // namespace
 
-void ThinOrganOptions::Validate() const {
-  const auto require = [](bool ok, const std::string& what) {
-    if (!ok) throw std::invalid_argument("ThinOrganOptions." + what);
+std::string ThinOrganOptions::Validate() const {
+  FirstProblem problem;
+  const auto require = [&problem](bool ok, const std::string& what) {
+    problem.Require(ok, "ThinOrganOptions." + what);
   };
   require(core_depth >= 1, "core_depth must be at least 1");
   require(core_reach >= 0, "core_reach must not be negative");
   require(std::isfinite(inward_voxels) && inward_voxels >= 0 && inward_voxels < 1,
           "inward_voxels must be in [0, 1)");
   require(smoothing_iterations >= 0, "smoothing_iterations must not be negative");
+  return problem.text();
 }
 
 std::vector<Eigen::Vector3i> ThinVoxels(const std::vector<Eigen::Vector3f>& occupied_centres,
                                         double voxel_size, const ThinOrganOptions& options) {
-  options.Validate();
+  RequireValid(options);
   if (!(voxel_size > 0)) throw std::invalid_argument("ThinVoxels: voxel size must be positive");
   std::set<Cell> occupied;
   for (const Eigen::Vector3f& centre : occupied_centres)

@@ -12,6 +12,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "core/geometry/mesh.h"
@@ -29,8 +30,8 @@ struct ThinOrganOptions {
   double inward_voxels = 0.5;
   int smoothing_iterations = 10;  // Taubin pairs
 
-  // Throws std::invalid_argument naming the bad field (ThinOrganOptions.<field>).
-  void Validate() const;
+  // Empty when valid; else a sentence naming the bad field (ThinOrganOptions.<field>).
+  std::string Validate() const;
 };
 
 // Voxel indices (voxel i spans [i, i + 1) * voxel_size) of the proxy's thin parts, sorted.

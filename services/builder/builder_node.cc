@@ -20,6 +20,7 @@
 #include "core/ppr/proxy_bounds.h"
 #include "core/segmentation/plant_mask.h"
 #include "core/util/log.h"
+#include "core/util/validation.h"
 #include "services/builder/node_inputs.h"
 
 namespace avc::builder {
@@ -72,7 +73,10 @@ std::string BuilderNodeOptions::Validate() const {
   }
   if (max_unmatched == 0) return "max_unmatched must be at least 1";
   if (reconstruct.method == MvsMethod::kNone) return "the default MVS method cannot be 'none'";
-  return products.Validate();
+  FirstProblem problem;
+  problem.Include(reconstruct.Validate());
+  problem.Include(products.Validate());
+  return problem.text();
 }
 
 BuilderNode::BuilderNode(bus::Bus& bus, bus::EventLoop& loop, bus::HeartbeatPublisher& heartbeat,

@@ -9,19 +9,6 @@ namespace {
 using config::OptionSpec;
 using config::OptionTable;
 
-// The sub-structs' own Validate() throw; the table's contract is a problem string.
-std::string Problem(const ReconstructOptions& options) {
-  try {
-    options.patch.Validate();
-    options.sweep.Validate();
-    options.soil.Validate();
-    options.support.Validate();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
-}
-
 // The automatic masks' tuning (core/segmentation/plant_mask.h says each one's trade-off).
 void AddMaskTuning(OptionTable<ReconstructOptions>& table) {
   table
@@ -239,7 +226,8 @@ void AddSupport(OptionTable<ReconstructOptions>& table) {
 }
 
 OptionTable<ReconstructOptions> MakeTable() {
-  OptionTable<ReconstructOptions> table("builder", Problem);
+  OptionTable<ReconstructOptions> table(
+      "builder", [](const ReconstructOptions& options) { return options.Validate(); });
   AddMethods(table);
   AddProxy(table);
   AddPatch(table);

@@ -11,6 +11,7 @@
 #include "core/dataset/world_up.h"
 #include "core/mvs/depth_range.h"
 #include "core/ppr/proxy_bounds.h"
+#include "core/util/validation.h"
 
 namespace avc::builder {
 namespace {
@@ -157,6 +158,15 @@ CarvedProxy CarvePlantProxy(dataset::ViewSet& set, const ReconstructOptions& opt
 }
 
 }  // namespace
+
+std::string ReconstructOptions::Validate() const {
+  FirstProblem problem;
+  problem.Include(patch.Validate());
+  problem.Include(sweep.Validate());
+  problem.Include(soil.Validate());
+  problem.Include(support.Validate());
+  return problem.text();
+}
 
 std::string MvsMethodName(MvsMethod method) {
   switch (method) {

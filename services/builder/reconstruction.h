@@ -41,6 +41,9 @@ struct ReconstructOptions {
   // On the real ROMI scan 0 gives precision/recall 0.90/0.85 at 2 mm against its reference,
   // 1 keeps every point (0.82/0.89): the points off the proxy lie within a voxel of it.
   int points_proxy_margin = 0;
+
+  // Empty when usable; else the first bad setting (of the MVS, soil and support options).
+  std::string Validate() const;
 };
 
 struct StageTime {

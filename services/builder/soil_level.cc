@@ -12,6 +12,7 @@
 
 #include "core/util/file_io.h"
 #include "core/util/upper_median.h"
+#include "core/util/validation.h"
 
 namespace avc::builder {
 namespace {
@@ -186,12 +187,10 @@ const Plane& Best(const std::vector<Plane>& planes) {
 
 }  // namespace
 
-void SoilLevelOptions::Validate() const {
-  const auto require = [](bool ok, const char* field, double value) {
-    if (!ok) {
-      throw std::invalid_argument(
-          fmt::format("SoilLevelOptions.{} = {} is out of range", field, value));
-    }
+std::string SoilLevelOptions::Validate() const {
+  FirstProblem problem;
+  const auto require = [&problem](bool ok, const char* field, double value) {
+    { problem.Require(ok, fmt::format("SoilLevelOptions.{} = {} is out of range", field, value)); }
   };
   require(inner_radius >= 0.0, "inner_radius", inner_radius);
   require(outer_radius > inner_radius, "outer_radius", outer_radius);
@@ -205,12 +204,13 @@ void SoilLevelOptions::Validate() const {
   require(min_elevation_deg >= 0.0 && min_elevation_deg < 90.0, "min_elevation_deg",
           min_elevation_deg);
   require(max_contrast >= 0.0, "max_contrast", max_contrast);
+  return problem.text();
 }
 
 std::optional<SoilLevel> FindSoilLevel(const std::vector<dataset::View>& views,
                                        const mvs::MvsBounds& proxy, const SoilLevelOptions& options,
                                        std::string* why_not) {
-  options.Validate();
+  RequireValid(options);
   const auto none = [&](const std::string& reason) -> std::optional<SoilLevel> {
     if (why_not != nullptr) *why_not = reason;
     return std::nullopt;

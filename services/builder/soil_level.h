@@ -44,8 +44,8 @@ struct SoilLevelOptions {
   // the median over the first sweep's planes; a flat sweep means no soil was seen.
   double max_contrast = 0.6;
 
-  // Throws std::invalid_argument naming the bad field (SoilLevelOptions.<field>).
-  void Validate() const;
+  // Empty when valid; else a sentence naming the bad field (SoilLevelOptions.<field>).
+  std::string Validate() const;
 };
 
 struct SoilLevel {

@@ -7,22 +7,24 @@
 #include <stdexcept>
 
 #include "core/util/upper_median.h"
+#include "core/util/validation.h"
 
 namespace avc::builder {
 
-void SupportOptions::Validate() const {
-  if (!(min_jump > 1)) throw std::invalid_argument("SupportOptions.min_jump must be above 1");
+std::string SupportOptions::Validate() const {
+  if (!(min_jump > 1)) return "SupportOptions.min_jump must be above 1";
   if (!(min_mass_fraction >= 0 && min_mass_fraction <= 1)) {
-    throw std::invalid_argument("SupportOptions.min_mass_fraction must be in [0, 1]");
+    return "SupportOptions.min_mass_fraction must be in [0, 1]";
   }
   if (min_plant_slices < 1) {
-    throw std::invalid_argument("SupportOptions.min_plant_slices must be at least 1");
+    return "SupportOptions.min_plant_slices must be at least 1";
   }
+  return {};
 }
 
 std::optional<SupportTop> FindSupportTop(const std::vector<Eigen::Vector3f>& occupied,
                                          double voxel_size, const SupportOptions& options) {
-  options.Validate();
+  RequireValid(options);
   if (!options.enabled || occupied.empty() || !(voxel_size > 0)) return std::nullopt;
   std::map<int64_t, double> slices;  // slice index (z / voxel) -> voxels
   for (const Eigen::Vector3f& centre : occupied) {

@@ -26,8 +26,8 @@ struct SupportOptions {
   // Slices of plant needed above a support before one is looked for.
   int min_plant_slices = 4;
 
-  // Throws std::invalid_argument naming the bad field (SupportOptions.<field>).
-  void Validate() const;
+  // Empty when valid; else a sentence naming the bad field (SupportOptions.<field>).
+  std::string Validate() const;
 };
 
 struct SupportTop {

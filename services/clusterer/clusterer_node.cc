@@ -11,6 +11,7 @@
 #include "core/messages/mvs_points_message.h"
 #include "core/ppr/octree_voxels.h"
 #include "core/util/log.h"
+#include "core/util/validation.h"
 #include "services/clusterer/clusters_ply.h"
 
 namespace avc::clusterer {
@@ -36,8 +37,10 @@ T DecodeProduct(const products::Product& product) {
 std::string ClustererNodeOptions::Validate() const {
   if (service.empty()) return "service name is empty";
   if (max_waiting == 0) return "max_waiting must be at least 1";
-  if (clustering.merge.min_points < 1) return "merge min_points must be at least 1";
-  return products.Validate();
+  FirstProblem problem;
+  problem.Include(clustering.Validate());
+  problem.Include(products.Validate());
+  return problem.text();
 }
 
 ClustererNode::ClustererNode(bus::Bus& bus, bus::EventLoop& loop,

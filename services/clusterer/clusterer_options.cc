@@ -96,7 +96,8 @@ void AddSplits(OptionTable<ClustererOptions>& table) {
 }
 
 OptionTable<ClustererOptions> MakeTable() {
-  OptionTable<ClustererOptions> table("clusterer");
+  OptionTable<ClustererOptions> table(
+      "clusterer", [](const ClustererOptions& options) { return options.Validate(); });
   AddScales(table);
   AddRounds(table);
   AddSplits(table);

@@ -7,6 +7,11 @@
 
 namespace avc::clusterer {
 
+std::string ClustererOptions::Validate() const {
+  if (merge.min_points < 1) return "merge.min_points must be at least 1";
+  return cluster.Validate();
+}
+
 messages::ClustersContent ClusterMerged(merge::MergedPoints merged, int64_t raw_points,
                                         const cluster::ClusterOptions& options,
                                         const std::string& cloud_id, const std::string& map_id) {

@@ -18,6 +18,9 @@ namespace avc::clusterer {
 struct ClustererOptions {
   merge::MergeOptions merge;
   cluster::ClusterOptions cluster;
+
+  // Empty when usable; else a sentence naming the bad setting.
+  std::string Validate() const;
 };
 
 // Never throws for bad data: empty or inconsistent points (NaN, missing normals), an empty proxy,

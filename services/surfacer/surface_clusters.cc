@@ -6,6 +6,7 @@
 
 #include "core/geometry/mesh_io.h"
 #include "core/traits/traits_writer.h"
+#include "core/util/validation.h"
 
 namespace avc::surfacer {
 namespace {
@@ -17,6 +18,13 @@ std::string JoinWarnings(const std::vector<std::string>& warnings) {
 }
 
 }  // namespace
+
+std::string SurfacerOptions::Validate() const {
+  FirstProblem problem;
+  problem.Include(surface.Validate());
+  problem.Include(thin_organs.Validate());
+  return problem.text();
+}
 
 SurfacerResult SurfaceClusters(const messages::ClustersContent& clusters,
                                const SurfacerOptions& options,

@@ -22,6 +22,9 @@ struct SurfacerOptions {
   traits::TraitOptions traits;
   // Used where the plant proxy is at hand (SurfaceModel): off by default.
   surface::ThinOrganOptions thin_organs;
+
+  // Empty when usable; else the first bad setting.
+  std::string Validate() const;
 };
 
 struct SurfacerResult {

@@ -8,18 +8,17 @@
 #include "core/bus/channels.h"
 #include "core/surface/surface_images_io.h"
 #include "core/util/log.h"
+#include "core/util/validation.h"
 #include "services/surfacer/mesh_message.h"
 
 namespace avc::surfacer {
 
 std::string SurfacerNodeOptions::Validate() const {
   if (service.empty()) return "service name is empty";
-  try {
-    surfacing.surface.Validate();
-  } catch (const std::invalid_argument& error) {
-    return error.what();
-  }
-  return products.Validate();
+  FirstProblem problem;
+  problem.Include(surfacing.Validate());
+  problem.Include(products.Validate());
+  return problem.text();
 }
 
 SurfacerNode::SurfacerNode(bus::Bus& bus, bus::EventLoop& loop, bus::HeartbeatPublisher& heartbeat,

@@ -9,16 +9,6 @@ namespace {
 using config::OptionTable;
 using Table = OptionTable<SurfacerOptions>;
 
-std::string Problem(const SurfacerOptions& options) {
-  try {
-    options.surface.Validate();
-    options.thin_organs.Validate();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
-}
-
 void AddThinOrgans(Table& table) {
   table
       .Add("thin_organs.enabled", [](auto& o) -> auto& { return o.thin_organs.enabled; },
@@ -158,7 +148,7 @@ void AddMerging(Table& table) {
 }
 
 Table MakeTable() {
-  Table table("surfacer", Problem);
+  Table table("surfacer", [](const SurfacerOptions& options) { return options.Validate(); });
   AddScales(table);
   AddGrowth(table);
   AddModifications(table);

@@ -12,6 +12,7 @@
 
 #include "core/camera/camera_io.h"
 #include "core/geometry/mesh_io.h"
+#include "core/util/validation.h"
 #include "sim/cell/cell_truth_json.h"
 #include "sim/cell/noise.h"
 #include "sim/cell/perturbation.h"
@@ -32,25 +33,6 @@ struct View {
   camera::Camera camera;
 };
 
-void CheckOptions(const RenderDatasetOptions& options) {
-  if (options.views < 1) throw std::invalid_argument("views must be at least 1");
-  if (options.rings < 1 || options.rings > options.views) {
-    throw std::invalid_argument(
-        fmt::format("rings must be between 1 and the number of views ({})", options.views));
-  }
-  if (!(options.min_elevation >= -1.2 && options.max_elevation <= 1.5 &&
-        options.min_elevation <= options.max_elevation)) {
-    throw std::invalid_argument("elevations must satisfy -69 deg <= min <= max <= 86 deg");
-  }
-  if (!(options.distance >= 0) || !std::isfinite(options.distance)) {
-    throw std::invalid_argument("distance must be a non-negative number of metres");
-  }
-  if ((options.width == 0) != (options.height == 0) || options.width < 0 || options.height < 0) {
-    throw std::invalid_argument("give both width and height (positive), or neither");
-  }
-  if (options.output.empty()) throw std::invalid_argument("no output directory given");
-}
-
 void PrepareOutput(const fs::path& output) {
   std::error_code error;
   if (fs::exists(output, error) && !fs::is_empty(output, error)) {
@@ -60,6 +42,26 @@ void PrepareOutput(const fs::path& output) {
 }
 
 }  // namespace
+
+std::string RenderDatasetOptions::Validate() const {
+  const RenderDatasetOptions& options = *this;
+  if (options.views < 1) return "views must be at least 1";
+  if (options.rings < 1 || options.rings > options.views) {
+    return fmt::format("rings must be between 1 and the number of views ({})", options.views);
+  }
+  if (!(options.min_elevation >= -1.2 && options.max_elevation <= 1.5 &&
+        options.min_elevation <= options.max_elevation)) {
+    return "elevations must satisfy -69 deg <= min <= max <= 86 deg";
+  }
+  if (!(options.distance >= 0) || !std::isfinite(options.distance)) {
+    return "distance must be a non-negative number of metres";
+  }
+  if ((options.width == 0) != (options.height == 0) || options.width < 0 || options.height < 0) {
+    return "give both width and height (positive), or neither";
+  }
+  if (options.output.empty()) return "no output directory given";
+  return {};
+}
 
 Scene MakeScene(const RenderDatasetOptions& options) {
   if (options.chessboard) return ChessboardScene(*options.chessboard);
@@ -204,7 +206,7 @@ nlohmann::ordered_json SceneJson(const RenderDatasetOptions& options, const Scen
 
 RenderDatasetSummary RenderDataset(const RenderDatasetOptions& options,
                                    const ProgressCallback& progress) {
-  CheckOptions(options);
+  RequireValid(options);
   if (const std::string problem = ValidateRenderOptions(options.render); !problem.empty()) {
     throw std::invalid_argument(problem);
   }

@@ -56,6 +56,9 @@ struct RenderDatasetOptions {
   bool noise = false;  // exposure changes and pixel noise (seeded per view)
 
   std::filesystem::path output;  // created; refused if it exists and is not empty
+
+  // Empty when usable; else a sentence naming the bad option.
+  std::string Validate() const;
 };
 
 struct RenderDatasetSummary {

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "core/kinematics/inverse_kinematics.h"
+#include "core/util/validation.h"
 #include "sim/cell/cell_truth.h"
 #include "sim/cell/perturbation.h"
 #include "sim/cell/random.h"
@@ -20,21 +21,6 @@ namespace {
 constexpr double kDegree = std::numbers::pi / 180;
 constexpr int kMaxAttemptsPerPose = 500;
 constexpr double kImageMarginPx = 10;
-
-void CheckOptions(const HandEyeScenarioOptions& o) {
-  const bool valid = o.poses >= 1 && o.board_columns >= 2 && o.board_rows >= 2 && o.square_m > 0 &&
-                     o.pixel_sigma_px >= 0 && o.robot_rotation_sigma_deg >= 0 &&
-                     o.robot_translation_sigma_mm >= 0 && o.min_distance_m > 0 &&
-                     o.max_distance_m >= o.min_distance_m &&
-                     o.max_elevation_deg >= o.min_elevation_deg && o.azimuth_half_range_deg >= 0 &&
-                     o.roll_half_range_deg >= 0;
-  if (!valid) throw std::invalid_argument("hand-eye scenario: invalid options");
-  if (o.intrinsics) {
-    if (std::string error = o.intrinsics->Validate(); !error.empty()) {
-      throw std::invalid_argument("hand-eye scenario: camera " + error);
-    }
-  }
-}
 
 Eigen::Vector3d NormalVector(sim::DeterministicRandom& random) {
   const double x = random.Normal(), y = random.Normal(), z = random.Normal();
@@ -105,6 +91,23 @@ std::optional<std::vector<Eigen::Vector2d>> VisibleCorners(
 
 }  // namespace
 
+std::string HandEyeScenarioOptions::Validate() const {
+  const HandEyeScenarioOptions& o = *this;
+  const bool valid = o.poses >= 1 && o.board_columns >= 2 && o.board_rows >= 2 && o.square_m > 0 &&
+                     o.pixel_sigma_px >= 0 && o.robot_rotation_sigma_deg >= 0 &&
+                     o.robot_translation_sigma_mm >= 0 && o.min_distance_m > 0 &&
+                     o.max_distance_m >= o.min_distance_m &&
+                     o.max_elevation_deg >= o.min_elevation_deg && o.azimuth_half_range_deg >= 0 &&
+                     o.roll_half_range_deg >= 0;
+  if (!valid) return "hand-eye scenario: invalid options";
+  if (o.intrinsics) {
+    if (std::string error = o.intrinsics->Validate(); !error.empty()) {
+      return "hand-eye scenario: camera " + error;
+    }
+  }
+  return {};
+}
+
 std::vector<calibration::hand_eye::HandEyeObservation> HandEyeScenario::Observations() const {
   std::vector<calibration::hand_eye::HandEyeObservation> observations;
   for (const HandEyeSyntheticView& view : views) {
@@ -130,7 +133,7 @@ std::vector<calibration::hand_eye::BoardView> HandEyeScenario::BoardViews() cons
 }
 
 HandEyeScenario MakeHandEyeScenario(const HandEyeScenarioOptions& options, uint64_t seed) {
-  CheckOptions(options);
+  RequireValid(options);
   // The cell's hand-eye and base placement vary with the seed; the intrinsics are given (taken
   // as already calibrated).
   const sim::CellTruth cell = sim::PerturbedCell(static_cast<uint32_t>(seed ^ (seed >> 32)));

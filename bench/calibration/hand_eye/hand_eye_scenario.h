@@ -35,6 +35,9 @@ struct HandEyeScenarioOptions {
   double max_elevation_deg = 75;
   double azimuth_half_range_deg = 60;  // about the robot's azimuth seen from the table centre
   double roll_half_range_deg = 30;
+
+  // Empty when usable; else a sentence naming the bad option.
+  std::string Validate() const;
 };
 
 struct HandEyeSyntheticView {

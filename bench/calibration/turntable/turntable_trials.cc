@@ -12,6 +12,7 @@
 #include "core/calibration/turntable/circle_screw_axis.h"
 #include "core/calibration/turntable/opposite_pairs_centre.h"
 #include "core/calibration/turntable/turntable_axis_fit.h"
+#include "core/util/validation.h"
 
 namespace avc::bench {
 namespace {
@@ -40,21 +41,21 @@ nlohmann::ordered_json Statistics(const std::vector<double>& values) {
           {"max", Percentile(values, 1.0)}};
 }
 
-void CheckOptions(const TurntableTrialOptions& o) {
-  if (o.trials < 1) throw std::invalid_argument("turntable trials: trials must be >= 1");
-  if (o.angles < 4) throw std::invalid_argument("turntable trials: angles must be >= 4");
-  for (double v : {o.position_sigma, o.orientation_sigma, o.angle_sigma, o.axis_tilt}) {
-    if (!std::isfinite(v) || v < 0)
-      throw std::invalid_argument("turntable trials: noise levels and tilt must be >= 0");
-  }
-  if (!(o.board_offset > 0))
-    throw std::invalid_argument("turntable trials: board_offset must be positive");
-}
-
 }  // namespace
 
+std::string TurntableTrialOptions::Validate() const {
+  const TurntableTrialOptions& o = *this;
+  if (o.trials < 1) return "turntable trials: trials must be >= 1";
+  if (o.angles < 4) return "turntable trials: angles must be >= 4";
+  for (double v : {o.position_sigma, o.orientation_sigma, o.angle_sigma, o.axis_tilt}) {
+    if (!std::isfinite(v) || v < 0) return "turntable trials: noise levels and tilt must be >= 0";
+  }
+  if (!(o.board_offset > 0)) return "turntable trials: board_offset must be positive";
+  return {};
+}
+
 nlohmann::json RunTurntableTrials(const TurntableTrialOptions& options) {
-  CheckOptions(options);
+  RequireValid(options);
   calibration::TurntableFitOptions fit;
   // The fit is told the noise levels of the simulation (as a user would set their table's spec);
   // noise-free runs keep small positive sigmas for the weights.

@@ -22,6 +22,9 @@ struct TurntableTrialOptions {
   double axis_tilt = 1 * M_PI / 180;      // true axis off the table frame's z
   double board_offset = 0.1;              // board origin distance from the axis, metres
   uint64_t seed = 20260101;
+
+  // Empty when usable; else a sentence naming the bad option.
+  std::string Validate() const;
 };
 
 // {"options": {...}, "methods": {name: {"centre_mm": {median, p90, max}, "axis_deg": {...},

@@ -20,6 +20,7 @@
 #include "core/mvs/patch/patch_refiner.h"
 #include "core/mvs/patch/seeds.h"
 #include "core/mvs/view_neighbours.h"
+#include "core/util/validation.h"
 
 namespace avc::mvs {
 namespace {
@@ -134,9 +135,10 @@ MvsPoints ToPoints(const PatchSet& set, const std::vector<PatchImage>& images) {
 
 }  // namespace
 
-void PatchMvsOptions::Validate() const {
-  auto require = [](bool ok, const char* field, const std::string& why) {
-    if (!ok) throw std::invalid_argument(fmt::format("PatchMvsOptions.{}: {}", field, why));
+std::string PatchMvsOptions::Validate() const {
+  FirstProblem problem;
+  auto require = [&problem](bool ok, const char* field, const std::string& why) {
+    problem.Require(ok, fmt::format("PatchMvsOptions.{}: {}", field, why));
   };
   require(level >= -1 && level <= 6, "level", "must be -1 (automatic) or 0..6");
   require(cell_size >= 1 && cell_size <= 64, "cell_size", "must be 1..64 pixels");
@@ -167,11 +169,12 @@ void PatchMvsOptions::Validate() const {
   require(bounds_dilation >= 0, "bounds_dilation", "must not be negative");
   require(whole_patch_in_mask >= -1 && whole_patch_in_mask <= 1, "whole_patch_in_mask",
           "must be -1 (automatic), 0 or 1");
+  return problem.text();
 }
 
 MvsPoints RunPatchMvs(const std::vector<dataset::View>& views, const MvsBounds& bounds,
                       const PatchMvsOptions& requested, const MvsProgress& progress) {
-  requested.Validate();
+  RequireValid(requested);
   ValidateViews(views);
   Require(bounds.empty() || (std::isfinite(bounds.voxel_size) && bounds.voxel_size > 0),
           "RunPatchMvs: bounds.voxel_size must be positive when bounds has voxels");

@@ -6,6 +6,7 @@
 // filtered for visibility consistency and regularity, over a few rounds. TBB-parallel in waves
 // committed in a fixed order, so the result does not depend on the thread count.
 
+#include <string>
 #include <vector>
 
 #include "core/dataset/view.h"
@@ -89,8 +90,8 @@ struct PatchMvsOptions {
   // Patches must lie within this many proxy voxels of an occupied voxel (bounds not empty).
   int bounds_dilation = 1;
 
-  // Throws std::invalid_argument naming the bad field.
-  void Validate() const;
+  // Empty when valid; else a sentence naming the bad field.
+  std::string Validate() const;
 };
 
 // Views must be undistorted (zero distortion), with CV_8UC3 images of their camera's size and

@@ -13,17 +13,14 @@
 #include "core/mvs/plane_sweep/sweep_depth_range.h"
 #include "core/mvs/plane_sweep/sweep_views.h"
 #include "core/mvs/view_neighbours.h"
+#include "core/util/validation.h"
 
 namespace avc::mvs {
-namespace {
-
-void Require(bool ok, const std::string& what) {
-  if (!ok) throw std::invalid_argument("PlaneSweepOptions: " + what);
-}
-
-}  // namespace
-
-void PlaneSweepOptions::Validate() const {
+std::string PlaneSweepOptions::Validate() const {
+  FirstProblem problem;
+  const auto Require = [&problem](bool ok, const std::string& what) {
+    problem.Require(ok, "PlaneSweepOptions: " + what);
+  };
   Require(level >= -1 && level <= 8, fmt::format("level {} is not -1 (auto) or 0..8", level));
   Require(window >= 3 && window % 2 == 1, fmt::format("window {} is not odd and >= 3", window));
   Require(neighbours >= 1 && neighbours <= 16,
@@ -42,11 +39,12 @@ void PlaneSweepOptions::Validate() const {
   Require(min_consistent_views >= 0, "min_consistent_views must be >= 0");
   Require(cell_px >= 0 && std::isfinite(cell_px), "cell_px must be >= 0");
   Require(normal_step_px >= 1, "normal_step_px must be >= 1");
+  return problem.text();
 }
 
 MvsPoints RunPlaneSweep(const std::vector<dataset::View>& views, const MvsBounds& bounds,
                         const PlaneSweepOptions& options, const MvsProgress& progress) {
-  options.Validate();
+  RequireValid(options);
   ValidateSweepInputs(views);
   if (!bounds.empty() && !(bounds.voxel_size > 0)) {
     throw std::invalid_argument("MvsBounds: voxel_size must be positive when voxels are given");

@@ -6,6 +6,7 @@
 // (winner-take-all, parabola refinement), and the depth maps are filtered by geometric
 // consistency and fused into oriented, coloured points.
 
+#include <string>
 #include <vector>
 
 #include "core/dataset/view.h"
@@ -44,8 +45,8 @@ struct PlaneSweepOptions {
   double cell_px = 2.0;
   int normal_step_px = 2;  // depth-map normals from back-projected points this far apart
 
-  // Throws std::invalid_argument naming the bad field.
-  void Validate() const;
+  // Empty when valid; else a sentence naming the bad field.
+  std::string Validate() const;
 };
 
 // Views: undistorted (distortion zero), at least two, images CV_8UC3 BGR of the camera's size,
