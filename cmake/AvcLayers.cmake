@@ -1,12 +1,17 @@
-# The layers (README, Layout): production code (core, drivers, services, orchestrator) never
-# depends on the simulator. Checked at configure time over every target's link closure, so a
-# wrong dependency fails the build where it is written, not in review.
+# The layers. Two configure-time checks, so that a wrong dependency fails the build where it is
+# written, not in review:
+#
+# avc_check_layer_table(<markdown file>)
+#   Reads the "Layers" table of the README's Layout (the one place the rules are written) and
+#   fails configuration when one of our targets links, directly, a target of ours from a folder
+#   its own folder's row does not allow. A target's folder is its SOURCE_DIR relative to the top
+#   source directory; its row is the most specific one matching it (`drivers/*/protocol` before
+#   `drivers`). A folder in no row is an error too, so a new folder gets its rules written down.
 #
 # avc_check_layers([FOLDERS <folder>...] [TARGETS <target>...] FORBIDDEN <regex>)
-#   Fails configuration when a target defined under one of the folders (relative to the top
-#   source directory), or one of the targets named, links, directly or through other targets, a
-#   target whose name matches the regex. The message names the target, the forbidden one and
-#   the chain between them.
+#   For rules about particular targets: fails configuration when a target defined under one of
+#   the folders, or one of the targets named, links, directly or through other targets, a target
+#   whose name matches the regex. The message names the target, the forbidden one and the chain.
 
 function(_avc_layer_targets dir out)
   get_property(targets DIRECTORY ${dir} PROPERTY BUILDSYSTEM_TARGETS)
@@ -18,7 +23,8 @@ function(_avc_layer_targets dir out)
   set(${out} ${targets} PARENT_SCOPE)
 endfunction()
 
-# The targets `target` links directly (our own targets only; $<LINK_ONLY:x> unwrapped).
+# The targets `target` links directly (our own targets only: no imported ones or aliases;
+# $<LINK_ONLY:x> unwrapped).
 function(_avc_layer_links target out)
   get_target_property(type ${target} TYPE)
   set(links "")
@@ -36,7 +42,10 @@ function(_avc_layer_links target out)
   foreach(link IN LISTS links)
     string(REGEX REPLACE "^\\$<LINK_ONLY:(.*)>$" "\\1" link "${link}")
     if(TARGET ${link} AND NOT link MATCHES "::")
-      list(APPEND result ${link})
+      get_target_property(imported ${link} IMPORTED)
+      if(NOT imported)
+        list(APPEND result ${link})
+      endif()
     endif()
   endforeach()
   list(REMOVE_DUPLICATES result)
@@ -76,5 +85,96 @@ function(avc_check_layers)
         list(APPEND queue ${link})
       endforeach()
     endwhile()
+  endforeach()
+endfunction()
+
+# Layer table rows: `folder` patterns ("*" stands for one folder name) and what they may use.
+# Sets AVC_LAYER_PATTERNS and, per pattern, AVC_LAYER_USES_<pattern> in the caller's scope.
+function(_avc_read_layer_table readme)
+  # Only headings and table rows: other lines may hold brackets, which CMake lists do not survive.
+  file(STRINGS ${readme} lines REGEX "^(#|\\|)")
+  set(patterns "")
+  set(in_section FALSE)
+  foreach(line IN LISTS lines)
+    if(line MATCHES "^#+ ")
+      if(line MATCHES "^#+ Layers$")
+        set(in_section TRUE)
+      elseif(in_section)
+        break()
+      endif()
+      continue()
+    endif()
+    # A row: | `a`, `b` | `c`, `d` |  (the header and the |---| line have no backticks first)
+    if(in_section AND line MATCHES "^\\| *`([^|]*)\\|([^|]*)\\|")
+      set(folders_cell "${CMAKE_MATCH_1}")
+      set(uses_cell "${CMAKE_MATCH_2}")
+      string(REGEX MATCHALL "`[^`]+`" uses "${uses_cell}")
+      string(REPLACE "`" "" uses "${uses}")
+      if(uses_cell MATCHES "everything")
+        set(uses "*")
+      endif()
+      string(REGEX MATCHALL "[^`, ]+" folders "${folders_cell}")
+      foreach(folder IN LISTS folders)
+        list(APPEND patterns ${folder})
+        set(AVC_LAYER_USES_${folder} ${uses} PARENT_SCOPE)
+      endforeach()
+    endif()
+  endforeach()
+  if(NOT patterns)
+    message(FATAL_ERROR "${readme}: no \"Layers\" section with a table of `folder` | `may use` rows")
+  endif()
+  set(AVC_LAYER_PATTERNS ${patterns} PARENT_SCOPE)
+endfunction()
+
+# The most specific pattern of AVC_LAYER_PATTERNS matching `folder` (empty if none).
+function(_avc_layer_of folder out)
+  set(best "")
+  set(best_depth -1)
+  foreach(pattern IN LISTS AVC_LAYER_PATTERNS)
+    string(REPLACE "*" "[^/]+" regex "${pattern}")
+    if(folder MATCHES "^${regex}(/|$)")
+      string(REGEX MATCHALL "/" slashes "${pattern}")
+      list(LENGTH slashes depth)
+      if(depth GREATER best_depth)
+        set(best ${pattern})
+        set(best_depth ${depth})
+      endif()
+    endif()
+  endforeach()
+  set(${out} "${best}" PARENT_SCOPE)
+endfunction()
+
+function(_avc_target_folder target out)
+  get_target_property(dir ${target} SOURCE_DIR)
+  file(RELATIVE_PATH folder ${PROJECT_SOURCE_DIR} ${dir})
+  set(${out} "${folder}" PARENT_SCOPE)
+endfunction()
+
+function(avc_check_layer_table readme)
+  _avc_read_layer_table(${readme})
+  _avc_layer_targets(${PROJECT_SOURCE_DIR} targets)
+  foreach(target IN LISTS targets)
+    _avc_target_folder(${target} folder)
+    _avc_layer_of("${folder}" layer)
+    if(NOT layer)
+      message(FATAL_ERROR "Layer table: ${target} is in ${folder}/, which no row of the Layers "
+                          "table in ${readme} covers: add one.")
+    endif()
+    set(uses ${AVC_LAYER_USES_${layer}})
+    if("*" IN_LIST uses)
+      continue()
+    endif()
+    _avc_layer_links(${target} links)
+    foreach(link IN LISTS links)
+      _avc_target_folder(${link} link_folder)
+      _avc_layer_of("${link_folder}" link_layer)
+      if(link_layer STREQUAL layer OR link_layer IN_LIST uses)
+        continue()
+      endif()
+      string(REPLACE ";" ", " allowed "${uses}")
+      message(FATAL_ERROR
+        "Layer violation: ${target} (${folder}/) links ${link} (${link_folder}/), but `${layer}` "
+        "may use only ${allowed} (the Layers table in ${readme}).")
+    endforeach()
   endforeach()
 endfunction()

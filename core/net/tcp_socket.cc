@@ -1,4 +1,4 @@
-#include "drivers/robot/tcp_socket.h"
+#include "core/net/tcp_socket.h"
 
 #include <arpa/inet.h>
 #include <fcntl.h>
@@ -13,7 +13,7 @@
 #include <cerrno>
 #include <cstring>
 
-namespace avc::robot {
+namespace avc::net {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -179,4 +179,4 @@ TcpStream TcpListener::Accept() {
   return TcpStream(fd, fmt::format("{}:{}", text, ntohs(address.sin_port)));
 }
 
-}  // namespace avc::robot
+}  // namespace avc::net

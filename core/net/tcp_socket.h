@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace avc::robot {
+namespace avc::net {
 
 // The peer closed the connection or the socket failed; what() names host:port.
 class ConnectionError : public std::runtime_error {
@@ -68,4 +68,4 @@ class TcpListener {
   uint16_t port_ = 0;
 };
 
-}  // namespace avc::robot
+}  // namespace avc::net

@@ -20,7 +20,7 @@ struct ControllerAddress {
   uint16_t rtde_port = 30004;
   uint16_t secondary_port = 30002;
   uint16_t dashboard_port = 29999;
-  Milliseconds timeout{2000};
+  net::Milliseconds timeout{2000};
 };
 
 class ControllerLink {
@@ -28,13 +28,13 @@ class ControllerLink {
   explicit ControllerLink(ControllerAddress address) : address_(std::move(address)) {}
 
   // Connects every interface (RTDE handshake, dashboard banner) and waits up to the timeout for
-  // KINEMATICS_INFO. Throws (ConnectionError or std::runtime_error naming the interface) and
+  // KINEMATICS_INFO. Throws (net::ConnectionError or std::runtime_error naming the interface) and
   // stays disconnected when any part fails.
   void Connect();
   void Disconnect();
   bool connected() const { return rtde_ != nullptr; }
 
-  // Throws ConnectionError when the dashboard hung up (the others notice on their own reads).
+  // Throws net::ConnectionError when the dashboard hung up (the others notice on their own reads).
   void CheckDashboard();
 
   // Only while connected.

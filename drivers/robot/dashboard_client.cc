@@ -27,8 +27,8 @@ std::string ReplyValue(const std::string& reply, std::string_view prefix) {
   return Trim(std::string_view(reply).substr(head.size()));
 }
 
-DashboardClient::DashboardClient(const std::string& host, uint16_t port, Milliseconds timeout)
-    : stream_(TcpStream::Connect(host, port, timeout)), timeout_(timeout) {
+DashboardClient::DashboardClient(const std::string& host, uint16_t port, net::Milliseconds timeout)
+    : stream_(net::TcpStream::Connect(host, port, timeout)), timeout_(timeout) {
   banner_ = ReadLine("banner");
   if (banner_.rfind(kDashboardBanner, 0) != 0) {
     throw std::runtime_error(
@@ -39,10 +39,10 @@ DashboardClient::DashboardClient(const std::string& host, uint16_t port, Millise
 void DashboardClient::CheckConnected() {
   uint8_t chunk[1024];
   try {
-    const size_t n = stream_.ReceiveSome(chunk, sizeof(chunk), Milliseconds(0));
+    const size_t n = stream_.ReceiveSome(chunk, sizeof(chunk), net::Milliseconds(0));
     buffer_.append(reinterpret_cast<const char*>(chunk), n);
-  } catch (const ConnectionError& error) {
-    throw ConnectionError(fmt::format("dashboard: {}", error.what()));
+  } catch (const net::ConnectionError& error) {
+    throw net::ConnectionError(fmt::format("dashboard: {}", error.what()));
   }
 }
 
@@ -55,13 +55,13 @@ std::string DashboardClient::ReadLine(const std::string& step) {
       buffer_.erase(0, end + 1);
       return line;
     }
-    const auto left = std::chrono::duration_cast<Milliseconds>(deadline - Clock::now());
+    const auto left = std::chrono::duration_cast<net::Milliseconds>(deadline - Clock::now());
     uint8_t chunk[1024];
     size_t n = 0;
     try {
       n = left.count() > 0 ? stream_.ReceiveSome(chunk, sizeof(chunk), left) : 0;
-    } catch (const ConnectionError& error) {
-      throw ConnectionError(fmt::format("dashboard {}: {}", step, error.what()));
+    } catch (const net::ConnectionError& error) {
+      throw net::ConnectionError(fmt::format("dashboard {}: {}", step, error.what()));
     }
     if (n == 0) {
       throw std::runtime_error(fmt::format("dashboard {}: {}: no reply within {} ms",
@@ -78,8 +78,8 @@ std::string DashboardClient::Command(const std::string& command) {
   }
   try {
     stream_.SendAll(command + "\n", timeout_);
-  } catch (const ConnectionError& error) {
-    throw ConnectionError(fmt::format("dashboard '{}': {}", command, error.what()));
+  } catch (const net::ConnectionError& error) {
+    throw net::ConnectionError(fmt::format("dashboard '{}': {}", command, error.what()));
   }
   return ReadLine("'" + command + "'");
 }

@@ -6,8 +6,8 @@
 
 #include <string>
 
-#include "drivers/robot/tcp_socket.h"
-#include "drivers/robot/ur_modes.h"
+#include "core/net/tcp_socket.h"
+#include "drivers/robot/protocol/ur_modes.h"
 
 namespace avc::robot {
 
@@ -17,7 +17,7 @@ class DashboardClient {
  public:
   // Connects and reads the banner; throws when the banner is not the dashboard's.
   DashboardClient(const std::string& host, uint16_t port,
-                  Milliseconds timeout = Milliseconds(2000));
+                  net::Milliseconds timeout = net::Milliseconds(2000));
 
   // Sends one command line and returns the reply line without its line end.
   std::string Command(const std::string& command);
@@ -32,8 +32,8 @@ class DashboardClient {
   std::string SafetyStatus();   // "Safetystatus: NORMAL" (>= 5.4); the text after the colon
   std::string PolyscopeVersion();
 
-  // Notices, without waiting, a connection the server closed: throws ConnectionError naming the
-  // peer (the dashboard sends nothing unasked, so a closed socket is the only thing to read).
+  // Notices, without waiting, a connection the server closed: throws net::ConnectionError naming
+  // the peer (the dashboard sends nothing unasked, so a closed socket is the only thing to read).
   void CheckConnected();
 
   const std::string& banner() const { return banner_; }
@@ -43,8 +43,8 @@ class DashboardClient {
   // Sends `command` and throws unless the reply starts with `expected`.
   std::string Expect(const std::string& command, std::string_view expected);
 
-  TcpStream stream_;
-  Milliseconds timeout_;
+  net::TcpStream stream_;
+  net::Milliseconds timeout_;
   std::string buffer_;
   std::string banner_;
 };

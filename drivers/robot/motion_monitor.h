@@ -8,6 +8,7 @@
 #include <array>
 #include <string>
 
+#include "drivers/robot/protocol/ur_pose.h"
 #include "drivers/robot/robot_state.h"
 
 namespace avc::robot {
@@ -22,11 +23,6 @@ struct MotionTolerance {
 enum class MotionStatus { kMoving, kReached, kSafetyStop, kNotRunning };
 
 std::string_view MotionStatusName(MotionStatus status);
-
-// Rotation vector (axis * angle) as a rotation matrix, and a UR pose vector as a transform.
-Eigen::Matrix3d RotationFromVector(const Eigen::Vector3d& rotation_vector);
-Eigen::Isometry3d PoseFromVector(const std::array<double, 6>& pose);
-std::array<double, 6> VectorFromPose(const Eigen::Isometry3d& pose);
 
 class MotionMonitor {
  public:

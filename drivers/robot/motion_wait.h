@@ -20,8 +20,8 @@ struct MotionOutcome {
 // Reads states until `monitor` says the motion is over or `timeout` passes. `settle_samples`
 // consecutive "reached" states are required so a state from before the program started (already
 // at the target by chance) or a single noisy sample cannot end the wait early. Throws
-// ConnectionError when the stream drops.
-MotionOutcome WaitForMotion(RtdeClient& client, MotionMonitor& monitor, Milliseconds timeout,
+// net::ConnectionError when the stream drops.
+MotionOutcome WaitForMotion(RtdeClient& client, MotionMonitor& monitor, net::Milliseconds timeout,
                             int settle_samples = 3);
 
 }  // namespace avc::robot

@@ -175,12 +175,12 @@ void RobotNode::LogControllerKinematics() {
 }
 
 void RobotNode::Poll() {
-  for (const auto& message : link_.script().Poll(Milliseconds(0))) {
+  for (const auto& message : link_.script().Poll(net::Milliseconds(0))) {
     if (active_ && message.message_type == primary::kRuntimeException) {
       Finish(avc::ack_t::STATUS_FAILED, "controller runtime error: " + message.text);
     }
   }
-  while (auto sample = link_.rtde().Receive(Milliseconds(0))) {
+  while (auto sample = link_.rtde().Receive(net::Milliseconds(0))) {
     last_state_ = sample->state;
     if (active_) {
       const MotionStatus status = active_->monitor.Update(sample->state);

@@ -38,10 +38,10 @@ struct RobotNodeConfig {
   uint16_t rtde_port = 30004;
   uint16_t secondary_port = 30002;
   uint16_t dashboard_port = 29999;
-  Milliseconds connect_timeout{2000};
-  Milliseconds poll_period{8};  // the CB3 control period
-  Milliseconds reconnect_min{250};
-  Milliseconds reconnect_max{5000};
+  net::Milliseconds connect_timeout{2000};
+  net::Milliseconds poll_period{8};  // the CB3 control period
+  net::Milliseconds reconnect_min{250};
+  net::Milliseconds reconnect_max{5000};
   // Nominal arm for envelope checks (planning only; reported poses come from the controller).
   kinematics::DhParameters dh = kinematics::NominalUr5();
   kinematics::SafetyEnvelope envelope;
@@ -51,16 +51,16 @@ struct RobotNodeConfig {
   double default_linear_acceleration = 0.5;  // m/s^2
   double stop_deceleration = 2.0;            // rad/s^2 of stopj (STOP, watchdog, shutdown)
   MotionTolerance tolerance;
-  Milliseconds motion_timeout{60000};
+  net::Milliseconds motion_timeout{60000};
   // Power on, brake release, unlock and power off are DONE once the controller reports the mode
   // they lead to (brakes take seconds to release), FAILED if that takes longer than this.
-  Milliseconds mode_change_timeout{30000};
+  net::Milliseconds mode_change_timeout{30000};
   double state_rate_hz = 25;  // robot_state_t publication rate (controller time)
   // The service whose heartbeat guards motions ("" disables the watchdog).
   std::string watchdog_service = "avc-orchestrator";
   // Silence after which a watched motion is stopped: with the stop itself taking about 25 ms,
   // the arm is stopped within 500 ms of losing the orchestrator (which beats at 10 Hz).
-  Milliseconds watchdog_timeout{400};
+  net::Milliseconds watchdog_timeout{400};
   // Who may move the arm: every command but STOP and POWER_OFF must be signed with the cell's
   // key (core/auth) unless unsigned commands are allowed explicitly.
   auth::VerifierOptions auth;
@@ -138,7 +138,7 @@ class RobotNode {
   bool unwatched_logged_ = false;
   bool shut_down_ = false;
   std::string error_;  // why there is no controller; "" while connected
-  Milliseconds reconnect_delay_;
+  net::Milliseconds reconnect_delay_;
   std::chrono::steady_clock::time_point next_connect_;
   bus::Bus::SubscriptionId command_subscription_ = 0;
   bus::Bus::SubscriptionId heartbeat_subscription_ = 0;

@@ -103,7 +103,7 @@ void RobotNode::Handle(const Command& command) {
 void RobotNode::Stop(const Command& command) {
   try {
     link_.script().Send(StopJProgram(config_.stop_deceleration));
-  } catch (const ConnectionError& error) {
+  } catch (const net::ConnectionError& error) {
     ControllerLost(error.what());
     Ack(command.request_id, avc::ack_t::STATUS_FAILED, error_);
     return;
@@ -185,7 +185,7 @@ std::string RobotNode::StartMotion(const Command& command) {
   if (!refusal.empty()) return "outside the safety envelope: " + refusal;
   try {
     link_.script().Send(program);
-  } catch (const ConnectionError& error) {
+  } catch (const net::ConnectionError& error) {
     ControllerLost(error.what());
     return error_;
   }
@@ -215,7 +215,7 @@ std::string RobotNode::RunDashboard(const Command& command) {
         dashboard.PowerOff();
         break;
     }
-  } catch (const ConnectionError& error) {
+  } catch (const net::ConnectionError& error) {
     ControllerLost(error.what());
     return error_;
   } catch (const std::exception& error) {

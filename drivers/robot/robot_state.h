@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "drivers/robot/rtde_protocol.h"
-#include "drivers/robot/ur_modes.h"
+#include "drivers/robot/protocol/rtde_protocol.h"
+#include "drivers/robot/protocol/ur_modes.h"
 
 namespace avc::robot {
 

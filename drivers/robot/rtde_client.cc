@@ -29,8 +29,8 @@ std::string JoinForMessage(const std::vector<std::string>& names) {
 
 }  // namespace
 
-RtdeClient::RtdeClient(std::string host, uint16_t port, Milliseconds timeout)
-    : stream_(TcpStream::Connect(host, port, timeout)), timeout_(timeout) {}
+RtdeClient::RtdeClient(std::string host, uint16_t port, net::Milliseconds timeout)
+    : stream_(net::TcpStream::Connect(host, port, timeout)), timeout_(timeout) {}
 
 std::string RtdeClient::Where(const std::string& step) const {
   return fmt::format("RTDE {}: {}", stream_.peer(), step);
@@ -41,7 +41,7 @@ void RtdeClient::Send(rtde::PacketType type, const std::vector<uint8_t>& payload
   stream_.SendAll(bytes.data(), bytes.size(), timeout_);
 }
 
-bool RtdeClient::Fill(Milliseconds timeout) {
+bool RtdeClient::Fill(net::Milliseconds timeout) {
   uint8_t buffer[8192];
   const size_t n = stream_.ReceiveSome(buffer, sizeof(buffer), timeout);
   if (n == 0) return false;
@@ -78,15 +78,15 @@ rtde::Packet RtdeClient::AwaitReply(rtde::PacketType type, const std::string& st
       if (packet->type == static_cast<uint8_t>(type)) return *packet;
       if (auto sample = Absorb(*packet)) pending_samples_.push_back(std::move(*sample));
     }
-    const auto left = std::chrono::duration_cast<Milliseconds>(deadline - Clock::now());
+    const auto left = std::chrono::duration_cast<net::Milliseconds>(deadline - Clock::now());
     try {
       if (left.count() <= 0 || !Fill(left)) {
         throw std::runtime_error(
             Where(fmt::format("{}: no {} reply within {} ms", step,
                               rtde::PacketTypeName(static_cast<uint8_t>(type)), timeout_.count())));
       }
-    } catch (const ConnectionError& error) {
-      throw ConnectionError(fmt::format("RTDE {}: {}", step, error.what()));
+    } catch (const net::ConnectionError& error) {
+      throw net::ConnectionError(fmt::format("RTDE {}: {}", step, error.what()));
     }
   }
 }
@@ -121,7 +121,8 @@ void RtdeClient::SetupOutputs(double frequency, const std::vector<std::string>& 
   Send(rtde::PacketType::kSetupOutputs,
        rtde::EncodeSetupOutputsRequest({frequency, names}, protocol_version_));
   const auto reply =
-      rtde::DecodeRecipeReply(AwaitReply(rtde::PacketType::kSetupOutputs, "setup outputs").payload);
+      rtde::DecodeRecipeReply(AwaitReply(rtde::PacketType::kSetupOutputs, "setup outputs").payload,
+                              rtde::PacketType::kSetupOutputs, protocol_version_);
   const auto not_found = Marked(names, reply.types, "NOT_FOUND");
   if (!not_found.empty()) {
     throw std::runtime_error(Where(fmt::format(
@@ -149,7 +150,8 @@ uint8_t RtdeClient::SetupInputs(const std::vector<std::string>& names) {
   if (names.empty()) throw std::runtime_error(Where("setup inputs: no variables requested"));
   Send(rtde::PacketType::kSetupInputs, rtde::EncodeSetupInputsRequest(names));
   const auto reply =
-      rtde::DecodeRecipeReply(AwaitReply(rtde::PacketType::kSetupInputs, "setup inputs").payload);
+      rtde::DecodeRecipeReply(AwaitReply(rtde::PacketType::kSetupInputs, "setup inputs").payload,
+                              rtde::PacketType::kSetupInputs, protocol_version_);
   const auto not_found = Marked(names, reply.types, "NOT_FOUND");
   const auto in_use = Marked(names, reply.types, "IN_USE");
   if (!not_found.empty() || !in_use.empty()) {
@@ -203,7 +205,7 @@ void RtdeClient::SendInputs(uint8_t recipe_id, const std::vector<rtde::Value>& v
        rtde::EncodeDataPackage({recipe_id, values}, input_types_[recipe_id], protocol_version_));
 }
 
-std::optional<RtdeSample> RtdeClient::Receive(Milliseconds timeout) {
+std::optional<RtdeSample> RtdeClient::Receive(net::Milliseconds timeout) {
   const auto deadline = Clock::now() + timeout;
   while (true) {
     if (!pending_samples_.empty()) {
@@ -214,19 +216,19 @@ std::optional<RtdeSample> RtdeClient::Receive(Milliseconds timeout) {
     while (auto packet = framer_.Next()) {
       if (auto sample = Absorb(*packet)) return sample;
     }
-    const auto left = std::chrono::duration_cast<Milliseconds>(deadline - Clock::now());
+    const auto left = std::chrono::duration_cast<net::Milliseconds>(deadline - Clock::now());
     try {
-      if (!Fill(std::max(left, Milliseconds(0)))) return std::nullopt;
-    } catch (const ConnectionError& error) {
-      throw ConnectionError(fmt::format("RTDE receive state: {}", error.what()));
+      if (!Fill(std::max(left, net::Milliseconds(0)))) return std::nullopt;
+    } catch (const net::ConnectionError& error) {
+      throw net::ConnectionError(fmt::format("RTDE receive state: {}", error.what()));
     }
   }
 }
 
-std::optional<RtdeSample> RtdeClient::ReceiveLatest(Milliseconds timeout) {
+std::optional<RtdeSample> RtdeClient::ReceiveLatest(net::Milliseconds timeout) {
   std::optional<RtdeSample> latest = Receive(timeout);
   if (!latest) return latest;
-  while (auto newer = Receive(Milliseconds(0))) latest = std::move(newer);
+  while (auto newer = Receive(net::Milliseconds(0))) latest = std::move(newer);
   return latest;
 }
 

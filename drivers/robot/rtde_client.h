@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "core/net/tcp_socket.h"
+#include "drivers/robot/protocol/rtde_protocol.h"
 #include "drivers/robot/robot_state.h"
-#include "drivers/robot/rtde_protocol.h"
-#include "drivers/robot/tcp_socket.h"
 
 namespace avc::robot {
 
@@ -26,8 +26,8 @@ struct RtdeSample {
 
 class RtdeClient {
  public:
-  // Connects; throws ConnectionError naming host:port.
-  RtdeClient(std::string host, uint16_t port, Milliseconds timeout = Milliseconds(2000));
+  // Connects; throws net::ConnectionError naming host:port.
+  RtdeClient(std::string host, uint16_t port, net::Milliseconds timeout = net::Milliseconds(2000));
 
   // Asks for protocol 2, then 1; returns the accepted version. Throws when neither is accepted.
   int NegotiateProtocol();
@@ -47,11 +47,11 @@ class RtdeClient {
   void SendInputs(uint8_t recipe_id, const std::vector<rtde::Value>& values);
 
   // The next data package, waiting up to `timeout`; nullopt when none arrived in time. Text
-  // messages arriving meanwhile are kept (TakeTextMessages). Throws ConnectionError on
+  // messages arriving meanwhile are kept (TakeTextMessages). Throws net::ConnectionError on
   // disconnect.
-  std::optional<RtdeSample> Receive(Milliseconds timeout);
+  std::optional<RtdeSample> Receive(net::Milliseconds timeout);
   // The newest package available now or within `timeout`: skips queued older ones.
-  std::optional<RtdeSample> ReceiveLatest(Milliseconds timeout);
+  std::optional<RtdeSample> ReceiveLatest(net::Milliseconds timeout);
 
   std::vector<rtde::TextMessage> TakeTextMessages();
 
@@ -68,13 +68,13 @@ class RtdeClient {
   // Waits for a reply of `type`, keeping data packages and text messages that come first.
   rtde::Packet AwaitReply(rtde::PacketType type, const std::string& step);
   // Reads more bytes into the framer; false on timeout.
-  bool Fill(Milliseconds timeout);
+  bool Fill(net::Milliseconds timeout);
   // Handles a packet that is not a reply; returns a sample for data packages.
   std::optional<RtdeSample> Absorb(const rtde::Packet& packet);
   std::string Where(const std::string& step) const;
 
-  TcpStream stream_;
-  Milliseconds timeout_;
+  net::TcpStream stream_;
+  net::Milliseconds timeout_;
   rtde::PacketFramer framer_;
   int protocol_version_ = 1;
   double max_frequency_ = kCb3MaxFrequency;

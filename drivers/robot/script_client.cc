@@ -9,16 +9,16 @@ namespace avc::robot {
 
 using Clock = std::chrono::steady_clock;
 
-ScriptClient::ScriptClient(const std::string& host, uint16_t port, Milliseconds timeout)
-    : stream_(TcpStream::Connect(host, port, timeout)), timeout_(timeout) {}
+ScriptClient::ScriptClient(const std::string& host, uint16_t port, net::Milliseconds timeout)
+    : stream_(net::TcpStream::Connect(host, port, timeout)), timeout_(timeout) {}
 
 void ScriptClient::Send(const std::string& program) {
   std::string text = program;
   if (text.empty() || text.back() != '\n') text += '\n';
   try {
     stream_.SendAll(text, timeout_);
-  } catch (const ConnectionError& error) {
-    throw ConnectionError(fmt::format("secondary interface: send script: {}", error.what()));
+  } catch (const net::ConnectionError& error) {
+    throw net::ConnectionError(fmt::format("secondary interface: send script: {}", error.what()));
   }
 }
 
@@ -30,7 +30,7 @@ void ScriptClient::Absorb(primary::RobotStateMessage state) {
   if (state.kinematics) kinematics_ = state.kinematics;
 }
 
-std::vector<primary::RobotMessage> ScriptClient::Poll(Milliseconds timeout) {
+std::vector<primary::RobotMessage> ScriptClient::Poll(net::Milliseconds timeout) {
   std::vector<primary::RobotMessage> messages = std::exchange(unread_, {});
   const auto deadline = Clock::now() + timeout;
   while (true) {
@@ -47,26 +47,26 @@ std::vector<primary::RobotMessage> ScriptClient::Poll(Milliseconds timeout) {
       }
     }
     if (!messages.empty()) return messages;
-    const auto left = std::chrono::duration_cast<Milliseconds>(deadline - Clock::now());
+    const auto left = std::chrono::duration_cast<net::Milliseconds>(deadline - Clock::now());
     if (left.count() <= 0) return messages;
     uint8_t chunk[4096];
     size_t n = 0;
     try {
       n = stream_.ReceiveSome(chunk, sizeof(chunk), left);
-    } catch (const ConnectionError& error) {
-      throw ConnectionError(fmt::format("secondary interface: {}", error.what()));
+    } catch (const net::ConnectionError& error) {
+      throw net::ConnectionError(fmt::format("secondary interface: {}", error.what()));
     }
     if (n == 0) return messages;
     framer_.Append(chunk, n);
   }
 }
 
-std::optional<primary::KinematicsInfo> ScriptClient::WaitForKinematics(Milliseconds timeout) {
+std::optional<primary::KinematicsInfo> ScriptClient::WaitForKinematics(net::Milliseconds timeout) {
   const auto deadline = Clock::now() + timeout;
   while (!kinematics_) {
-    const auto left = std::chrono::duration_cast<Milliseconds>(deadline - Clock::now());
+    const auto left = std::chrono::duration_cast<net::Milliseconds>(deadline - Clock::now());
     if (left.count() <= 0) break;
-    for (auto& message : Poll(std::min(left, Milliseconds(20)))) {
+    for (auto& message : Poll(std::min(left, net::Milliseconds(20)))) {
       unread_.push_back(std::move(message));  // kept for the caller's next Poll
     }
   }

@@ -9,21 +9,22 @@
 #include <string>
 #include <vector>
 
-#include "drivers/robot/primary_protocol.h"
-#include "drivers/robot/primary_robot_state.h"
-#include "drivers/robot/tcp_socket.h"
+#include "core/net/tcp_socket.h"
+#include "drivers/robot/protocol/primary_protocol.h"
+#include "drivers/robot/protocol/primary_robot_state.h"
 
 namespace avc::robot {
 
 class ScriptClient {
  public:
-  ScriptClient(const std::string& host, uint16_t port, Milliseconds timeout = Milliseconds(2000));
+  ScriptClient(const std::string& host, uint16_t port,
+               net::Milliseconds timeout = net::Milliseconds(2000));
 
   // Sends a program (a trailing newline is added when missing).
   void Send(const std::string& program);
   // Robot messages (text and runtime exceptions) received within `timeout`; reading stops at the
-  // first message or the timeout. Throws ConnectionError on disconnect.
-  std::vector<primary::RobotMessage> Poll(Milliseconds timeout);
+  // first message or the timeout. Throws net::ConnectionError on disconnect.
+  std::vector<primary::RobotMessage> Poll(net::Milliseconds timeout);
 
   // What the controller announced on this connection (VERSION on connect, KINEMATICS_INFO in
   // its ROBOT_STATE stream); filled by Poll.
@@ -36,15 +37,15 @@ class ScriptClient {
   // ROBOT_STATE messages decoded so far.
   int robot_states_received() const { return robot_states_received_; }
   // Polls until KINEMATICS_INFO arrived or `timeout` passed; returns it when it did.
-  std::optional<primary::KinematicsInfo> WaitForKinematics(Milliseconds timeout);
+  std::optional<primary::KinematicsInfo> WaitForKinematics(net::Milliseconds timeout);
 
   const std::string& peer() const { return stream_.peer(); }
 
  private:
   void Absorb(primary::RobotStateMessage state);
 
-  TcpStream stream_;
-  Milliseconds timeout_;
+  net::TcpStream stream_;
+  net::Milliseconds timeout_;
   primary::PackageFramer framer_;
   std::optional<primary::VersionMessage> version_;
   std::optional<primary::KinematicsInfo> kinematics_;

@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "drivers/turntable/lt360_protocol.h"
+#include "drivers/turntable/protocol/lt360_protocol.h"
 #include "drivers/turntable/serial_port.h"
 
 namespace avc::turntable {

@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-#include "drivers/turntable/lt360_protocol.h"
+#include "drivers/turntable/protocol/lt360_protocol.h"
 
 namespace avc::turntable {
 

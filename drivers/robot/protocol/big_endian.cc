@@ -1,4 +1,4 @@
-#include "drivers/robot/big_endian.h"
+#include "drivers/robot/protocol/big_endian.h"
 
 #include <fmt/format.h>
 

@@ -1,10 +1,10 @@
-#include "drivers/robot/primary_protocol.h"
+#include "drivers/robot/protocol/primary_protocol.h"
 
 #include <fmt/format.h>
 
 #include <stdexcept>
 
-#include "drivers/robot/big_endian.h"
+#include "drivers/robot/protocol/big_endian.h"
 
 namespace avc::robot::primary {
 namespace {
@@ -53,7 +53,8 @@ std::vector<uint8_t> FramePackage(uint8_t type, const std::vector<uint8_t>& body
 std::vector<uint8_t> EncodeVersionMessage(const VersionMessage& version, uint64_t timestamp) {
   BigEndianWriter body;
   body.U64(timestamp);
-  body.U8(static_cast<uint8_t>(-1));  // source: controller
+  // Source -2, as a real controller's VERSION carries (UR client library test_primary_parser).
+  body.U8(static_cast<uint8_t>(-2));
   body.U8(kVersionMessage);
   body.U8(static_cast<uint8_t>(version.project_name.size()));
   body.Bytes(version.project_name);

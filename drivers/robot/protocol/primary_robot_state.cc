@@ -1,11 +1,11 @@
-#include "drivers/robot/primary_robot_state.h"
+#include "drivers/robot/protocol/primary_robot_state.h"
 
 #include <fmt/format.h>
 
 #include <stdexcept>
 
-#include "drivers/robot/big_endian.h"
-#include "drivers/robot/primary_protocol.h"
+#include "drivers/robot/protocol/big_endian.h"
+#include "drivers/robot/protocol/primary_protocol.h"
 
 namespace avc::robot::primary {
 namespace {
@@ -40,7 +40,9 @@ RobotModeData DecodeMode(BigEndianReader& in) {
   m.control_mode = in.U8();
   m.target_speed_fraction = in.F64();
   m.speed_scaling = in.F64();
-  m.target_speed_fraction_limit = in.F64();
+  // CB3 3.0/3.1 end here (38-byte sub-package); 3.2-3.4 add the limit (46), 3.5 and later a
+  // reserved byte (47) (python-urx ursecmon.py; fixture robot_state_cb3_3_0_layout_mode_38).
+  if (in.Remaining() >= sizeof(double)) m.target_speed_fraction_limit = in.F64();
   return m;
 }
 

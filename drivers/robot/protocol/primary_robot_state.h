@@ -2,9 +2,10 @@
 
 // The primary/secondary interface's ROBOT_STATE message (type 16, sent at 10 Hz on 30001/30002):
 // a sequence of sub-packages framed like packages (int32 size incl. header, uint8 type). We
-// encode and decode ROBOT_MODE_DATA, JOINT_DATA, CARTESIAN_INFO and KINEMATICS_INFO in the CB3
-// layouts of Universal_Robots_Client_Library src/primary/robot_state/*.cpp; decoders skip unknown
-// sub-packages and any trailing bytes of known ones by size (newer software appends fields).
+// encode ROBOT_MODE_DATA, JOINT_DATA, CARTESIAN_INFO and KINEMATICS_INFO in the CB3 3.5 layouts
+// of Universal_Robots_Client_Library src/primary/robot_state/*.cpp and also decode the shorter
+// 3.0-3.4 ones; decoders skip unknown sub-packages and any trailing bytes of known ones by size
+// (newer software appends fields).
 
 #include <array>
 #include <cstdint>
@@ -37,7 +38,7 @@ struct RobotModeData {
   uint8_t control_mode = 0;
   double target_speed_fraction = 1;
   double speed_scaling = 1;
-  double target_speed_fraction_limit = 1;
+  double target_speed_fraction_limit = 1;  // kept when absent (CB3 3.0/3.1)
   bool operator==(const RobotModeData&) const = default;
 };
 

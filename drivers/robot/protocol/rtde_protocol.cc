@@ -1,10 +1,10 @@
-#include "drivers/robot/rtde_protocol.h"
+#include "drivers/robot/protocol/rtde_protocol.h"
 
 #include <fmt/format.h>
 
 #include <stdexcept>
 
-#include "drivers/robot/big_endian.h"
+#include "drivers/robot/protocol/big_endian.h"
 
 namespace avc::robot::rtde {
 namespace {
@@ -29,6 +29,15 @@ void CheckNameList(const std::string& joined, std::string_view what) {
     throw std::invalid_argument(fmt::format("{}: variable list is {} bytes, the limit is {}", what,
                                             joined.size(), kMaxNameListBytes));
   }
+}
+
+// v1 'O' replies are types only (RTDE guide, SETUP_OUTPUTS protocol v. 1 Return); 'I' replies
+// start with the recipe id at every version.
+bool RecipeReplyHasId(PacketType request, int protocol_version) {
+  if (request == PacketType::kSetupInputs) return true;
+  if (request == PacketType::kSetupOutputs) return protocol_version >= 2;
+  throw std::invalid_argument(fmt::format("RTDE recipe reply: {} is not a setup request",
+                                          PacketTypeName(static_cast<uint8_t>(request))));
 }
 
 std::vector<uint8_t> Take(BigEndianWriter& writer) { return std::move(writer.bytes()); }
@@ -180,17 +189,19 @@ std::vector<std::string> DecodeSetupInputsRequest(const std::vector<uint8_t>& pa
       std::string_view(reinterpret_cast<const char*>(payload.data()), payload.size()));
 }
 
-std::vector<uint8_t> EncodeRecipeReply(const RecipeReply& reply) {
+std::vector<uint8_t> EncodeRecipeReply(const RecipeReply& reply, PacketType request,
+                                       int protocol_version) {
   BigEndianWriter writer;
-  writer.U8(reply.recipe_id);
+  if (RecipeReplyHasId(request, protocol_version)) writer.U8(reply.recipe_id);
   writer.Bytes(JoinNames(reply.types));
   return Take(writer);
 }
 
-RecipeReply DecodeRecipeReply(const std::vector<uint8_t>& payload) {
+RecipeReply DecodeRecipeReply(const std::vector<uint8_t>& payload, PacketType request,
+                              int protocol_version) {
   auto reader = ReaderFor(payload, "RTDE recipe setup reply");
   RecipeReply reply;
-  reply.recipe_id = reader.U8();
+  if (RecipeReplyHasId(request, protocol_version)) reply.recipe_id = reader.U8();
   reply.types = SplitNames(reader.Rest());
   return reply;
 }

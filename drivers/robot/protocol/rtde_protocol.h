@@ -114,15 +114,20 @@ SetupOutputsRequest DecodeSetupOutputsRequest(const std::vector<uint8_t>& payloa
 std::vector<uint8_t> EncodeSetupInputsRequest(const std::vector<std::string>& names);
 std::vector<std::string> DecodeSetupInputsRequest(const std::vector<uint8_t>& payload);
 
-// Reply to 'O' and 'I': recipe id + comma-separated type names, "NOT_FOUND" (unknown variable)
-// or "IN_USE" (an input another client owns) in place of a type.
+// Reply to 'O' and 'I' (`request`): recipe id + comma-separated type names, "NOT_FOUND" (unknown
+// variable) or "IN_USE" (an input another client owns) in place of a type. A protocol v1 'O'
+// reply has no recipe id (recipe_id is 0 and not written); 'I' replies carry one at every version
+// (UR client library ControlPackageSetupOutputs/Inputs::parseWith). Any other `request` throws
+// std::invalid_argument.
 struct RecipeReply {
   uint8_t recipe_id = 0;
   std::vector<std::string> types;
   bool operator==(const RecipeReply&) const = default;
 };
-std::vector<uint8_t> EncodeRecipeReply(const RecipeReply& reply);
-RecipeReply DecodeRecipeReply(const std::vector<uint8_t>& payload);
+std::vector<uint8_t> EncodeRecipeReply(const RecipeReply& reply, PacketType request,
+                                       int protocol_version);
+RecipeReply DecodeRecipeReply(const std::vector<uint8_t>& payload, PacketType request,
+                              int protocol_version);
 
 // 'M': v2 is len+message, len+source, level; v1 is level + message.
 enum class MessageLevel : uint8_t { kException = 0, kError = 1, kWarning = 2, kInfo = 3 };

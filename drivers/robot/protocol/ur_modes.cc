@@ -1,4 +1,4 @@
-#include "drivers/robot/ur_modes.h"
+#include "drivers/robot/protocol/ur_modes.h"
 
 #include <array>
 #include <utility>

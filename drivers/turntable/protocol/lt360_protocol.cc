@@ -1,4 +1,4 @@
-#include "drivers/turntable/lt360_protocol.h"
+#include "drivers/turntable/protocol/lt360_protocol.h"
 
 #include <fmt/format.h>
 

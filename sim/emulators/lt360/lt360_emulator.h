@@ -15,7 +15,7 @@
 #include <string>
 #include <thread>
 
-#include "drivers/turntable/lt360_protocol.h"
+#include "drivers/turntable/protocol/lt360_protocol.h"
 #include "sim/emulators/clock/emulator_clock.h"
 
 namespace avc::sim {

@@ -7,7 +7,7 @@
 
 #include "core/kinematics/forward_kinematics.h"
 #include "core/util/keyed_random.h"
-#include "drivers/robot/motion_monitor.h"
+#include "drivers/robot/protocol/ur_pose.h"
 
 namespace avc::sim::ur5 {
 namespace {

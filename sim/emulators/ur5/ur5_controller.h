@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "drivers/robot/primary_protocol.h"
-#include "drivers/robot/primary_robot_state.h"
-#include "drivers/robot/ur_modes.h"
+#include "drivers/robot/protocol/primary_protocol.h"
+#include "drivers/robot/protocol/primary_robot_state.h"
+#include "drivers/robot/protocol/ur_modes.h"
 #include "sim/emulators/ur5/ur5_arm.h"
 #include "sim/emulators/ur5/ur5_emulator_options.h"
 #include "sim/emulators/ur5/ur5_rtde_variables.h"

@@ -75,7 +75,7 @@ std::string DashboardReply(Ur5Controller& controller, const std::string& line, b
   return fmt::format("could not understand: '{}'", Trim(line));
 }
 
-DashboardSession::DashboardSession(int id, robot::TcpStream stream, Ur5Controller& controller)
+DashboardSession::DashboardSession(int id, net::TcpStream stream, Ur5Controller& controller)
     : Session(id, std::move(stream)), controller_(controller) {
   Queue(std::string(kDashboardBannerLine));
 }

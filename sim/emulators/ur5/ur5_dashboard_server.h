@@ -18,7 +18,7 @@ std::string DashboardReply(Ur5Controller& controller, const std::string& line, b
 
 class DashboardSession final : public Session {
  public:
-  DashboardSession(int id, robot::TcpStream stream, Ur5Controller& controller);
+  DashboardSession(int id, net::TcpStream stream, Ur5Controller& controller);
 
  private:
   void Consume(const uint8_t* data, size_t size) override;

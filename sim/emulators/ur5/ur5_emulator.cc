@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "drivers/robot/tcp_socket.h"
+#include "core/net/tcp_socket.h"
 #include "sim/emulators/ur5/ur5_controller.h"
 #include "sim/emulators/ur5/ur5_dashboard_server.h"
 #include "sim/emulators/ur5/ur5_primary_server.h"
@@ -34,7 +34,7 @@ struct Ur5Emulator::Impl {
         dashboard(options.host, options.dashboard_port),
         controller(options, clock->NowSeconds()) {}
 
-  robot::TcpListener& Listener(Interface which) {
+  net::TcpListener& Listener(Interface which) {
     switch (which) {
       case Interface::kRtde:
         return rtde;
@@ -49,7 +49,7 @@ struct Ur5Emulator::Impl {
 
   void Accept(Interface which) {
     while (true) {
-      robot::TcpStream stream = Listener(which).Accept();
+      net::TcpStream stream = Listener(which).Accept();
       if (!stream.is_open()) return;
       const int id = next_session_id++;
       if (which == Interface::kRtde) {
@@ -134,7 +134,7 @@ struct Ur5Emulator::Impl {
 
   Ur5EmulatorOptions options;
   std::shared_ptr<EmulatorClock> clock;
-  robot::TcpListener rtde, primary, secondary, dashboard;
+  net::TcpListener rtde, primary, secondary, dashboard;
   Ur5Controller controller;
   RtdeInputOwners input_owners;
   std::vector<std::unique_ptr<Session>> sessions;

@@ -14,7 +14,7 @@
 #include <thread>
 
 #include "core/kinematics/dh_parameters.h"
-#include "drivers/robot/ur_modes.h"
+#include "drivers/robot/protocol/ur_modes.h"
 #include "sim/emulators/clock/emulator_clock.h"
 #include "sim/emulators/ur5/ur5_emulator_options.h"
 
@@ -37,7 +37,7 @@ struct Ur5Snapshot {
 class Ur5Emulator {
  public:
   // Binds every port and starts the loop thread on `clock` (nullptr: real time). Throws
-  // std::invalid_argument for bad options and robot::ConnectionError when a port cannot be
+  // std::invalid_argument for bad options and net::ConnectionError when a port cannot be
   // bound.
   explicit Ur5Emulator(Ur5EmulatorOptions options, std::shared_ptr<EmulatorClock> clock = nullptr);
   ~Ur5Emulator();

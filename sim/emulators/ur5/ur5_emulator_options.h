@@ -7,7 +7,7 @@
 #include <string>
 
 #include "core/kinematics/dh_parameters.h"
-#include "drivers/robot/rtde_protocol.h"
+#include "drivers/robot/protocol/rtde_protocol.h"
 #include "sim/cell/cell_truth.h"
 
 namespace avc::sim::ur5 {

@@ -2,12 +2,12 @@
 
 #include <string>
 
-#include "drivers/robot/primary_protocol.h"
-#include "drivers/robot/primary_robot_state.h"
+#include "drivers/robot/protocol/primary_protocol.h"
+#include "drivers/robot/protocol/primary_robot_state.h"
 
 namespace avc::sim::ur5 {
 
-PrimarySession::PrimarySession(int id, robot::TcpStream stream, Ur5Controller& controller)
+PrimarySession::PrimarySession(int id, net::TcpStream stream, Ur5Controller& controller)
     : Session(id, std::move(stream)), controller_(controller) {
   Queue(robot::primary::EncodeVersionMessage(controller_.Version(),
                                              static_cast<uint64_t>(controller_.time() * 1e6)));

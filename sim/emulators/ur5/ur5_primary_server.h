@@ -16,7 +16,7 @@ inline constexpr double kRobotStatePeriod = 0.1;  // s of controller time
 
 class PrimarySession final : public Session {
  public:
-  PrimarySession(int id, robot::TcpStream stream, Ur5Controller& controller);
+  PrimarySession(int id, net::TcpStream stream, Ur5Controller& controller);
 
   void OnTick() override;
 

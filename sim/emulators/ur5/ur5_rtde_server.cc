@@ -8,7 +8,7 @@ namespace avc::sim::ur5 {
 
 namespace rtde = robot::rtde;
 
-RtdeSession::RtdeSession(int id, robot::TcpStream stream, Ur5Controller& controller,
+RtdeSession::RtdeSession(int id, net::TcpStream stream, Ur5Controller& controller,
                          RtdeInputOwners& owners)
     : Session(id, std::move(stream)), controller_(controller), owners_(owners) {}
 
@@ -93,7 +93,8 @@ void RtdeSession::SetupOutputs(const rtde::SetupOutputsRequest& request) {
     output_types_ = std::move(types);
     period_ = 1.0 / request.frequency;
   }
-  Reply(rtde::PacketType::kSetupOutputs, rtde::EncodeRecipeReply(reply));
+  Reply(rtde::PacketType::kSetupOutputs,
+        rtde::EncodeRecipeReply(reply, rtde::PacketType::kSetupOutputs, protocol_));
 }
 
 void RtdeSession::SetupInputs(const std::vector<std::string>& names) {
@@ -120,7 +121,8 @@ void RtdeSession::SetupInputs(const std::vector<std::string>& names) {
     for (const auto& name : names) owners_[name] = id();
     inputs_[reply.recipe_id] = std::move(recipe);
   }
-  Reply(rtde::PacketType::kSetupInputs, rtde::EncodeRecipeReply(reply));
+  Reply(rtde::PacketType::kSetupInputs,
+        rtde::EncodeRecipeReply(reply, rtde::PacketType::kSetupInputs, protocol_));
 }
 
 void RtdeSession::WriteInputs(const std::vector<uint8_t>& payload) {

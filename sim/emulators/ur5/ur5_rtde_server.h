@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "drivers/robot/rtde_protocol.h"
+#include "drivers/robot/protocol/rtde_protocol.h"
 #include "sim/emulators/ur5/ur5_controller.h"
 #include "sim/emulators/ur5/ur5_session.h"
 
@@ -21,7 +21,7 @@ using RtdeInputOwners = std::map<std::string, int>;
 
 class RtdeSession final : public Session {
  public:
-  RtdeSession(int id, robot::TcpStream stream, Ur5Controller& controller, RtdeInputOwners& owners);
+  RtdeSession(int id, net::TcpStream stream, Ur5Controller& controller, RtdeInputOwners& owners);
   // Releases the inputs this session owned.
   ~RtdeSession() override;
 

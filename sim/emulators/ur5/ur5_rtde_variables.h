@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "drivers/robot/rtde_protocol.h"
+#include "drivers/robot/protocol/rtde_protocol.h"
 
 namespace avc::sim::ur5 {
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "drivers/robot/tcp_socket.h"
+#include "core/net/tcp_socket.h"
 
 namespace avc::sim::ur5 {
 
@@ -19,7 +19,7 @@ inline constexpr size_t kMaxQueuedBytes = 64 * 1024;
 
 class Session {
  public:
-  Session(int id, robot::TcpStream stream) : id_(id), stream_(std::move(stream)) {}
+  Session(int id, net::TcpStream stream) : id_(id), stream_(std::move(stream)) {}
   virtual ~Session() = default;
   Session(const Session&) = delete;
   Session& operator=(const Session&) = delete;
@@ -53,7 +53,7 @@ class Session {
 
  private:
   int id_;
-  robot::TcpStream stream_;
+  net::TcpStream stream_;
   std::vector<uint8_t> out_;
   bool closed_ = false;
   bool hang_up_after_flush_ = false;

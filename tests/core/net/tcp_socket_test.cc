@@ -3,7 +3,7 @@
 // every inherited descriptor close-on-exec, so the child here is started the plain way a library
 // (posix_spawn, system, popen) would, which only the socket's own flag protects against.
 
-#include "drivers/robot/tcp_socket.h"
+#include "core/net/tcp_socket.h"
 
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -12,7 +12,7 @@
 
 #include <memory>
 
-namespace avc::robot {
+namespace avc::net {
 namespace {
 
 TEST(TcpListener, APortClosedByItsOwnerIsFreeEvenWhileAChildStartedMeanwhileRuns) {
@@ -33,4 +33,4 @@ TEST(TcpListener, APortClosedByItsOwnerIsFreeEvenWhileAChildStartedMeanwhileRuns
 }
 
 }  // namespace
-}  // namespace avc::robot
+}  // namespace avc::net

@@ -12,7 +12,7 @@
 #include "core/kinematics/pose_difference.h"
 #include "drivers/robot/dashboard_client.h"
 #include "drivers/robot/motion_monitor.h"
-#include "drivers/robot/primary_robot_state.h"
+#include "drivers/robot/protocol/primary_robot_state.h"
 #include "drivers/robot/script_client.h"
 #include "drivers/robot/urscript.h"
 #include "sim/cell/perturbation.h"
@@ -22,7 +22,7 @@
 namespace avc {
 namespace {
 
-using robot::Milliseconds;
+using net::Milliseconds;
 namespace primary = robot::primary;
 
 constexpr double kNoise = 1e-5;
@@ -44,7 +44,7 @@ class PrimaryStreamTest : public ::testing::Test {
     const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(3);
     while (!done()) {
       if (std::chrono::steady_clock::now() > end) return false;
-      client.Poll(Milliseconds(5));
+      client.Poll(net::Milliseconds(5));
     }
     return true;
   }

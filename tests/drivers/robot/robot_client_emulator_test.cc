@@ -21,7 +21,7 @@ namespace avc {
 namespace {
 
 using kinematics::JointVector;
-using robot::Milliseconds;
+using net::Milliseconds;
 using robot::MotionStatus;
 using robot::RobotMode;
 using robot::SafetyMode;
@@ -96,7 +96,7 @@ TEST(RobotClientEmulator, FallsBackToVersion1OnAnOldController) {
   robot::RtdeClient client(kHost, emulator->rtde_port());
   client.Handshake();
   EXPECT_EQ(client.protocol_version(), 1);
-  const auto sample = client.Receive(Milliseconds(2000));
+  const auto sample = client.Receive(net::Milliseconds(2000));
   ASSERT_TRUE(sample);
   EXPECT_EQ(sample->state.robot_mode, RobotMode::kPowerOff);
 }
@@ -108,10 +108,10 @@ TEST(RobotClientEmulator, SteppedClockGivesExactControllerTimestamps) {
   sim::ur5::Ur5Emulator emulator(TestOptions(), clock);
   robot::RtdeClient client(kHost, emulator.rtde_port());
   client.Handshake();
-  auto previous = client.Receive(Milliseconds(2000));
+  auto previous = client.Receive(net::Milliseconds(2000));
   ASSERT_TRUE(previous);
   for (int i = 0; i < 20; ++i) {
-    const auto sample = client.Receive(Milliseconds(2000));
+    const auto sample = client.Receive(net::Milliseconds(2000));
     ASSERT_TRUE(sample);
     EXPECT_NEAR(sample->state.timestamp - previous->state.timestamp, 0.008, 1e-9);
     previous = sample;
@@ -152,7 +152,7 @@ TEST_F(RobotClientEmulatorTest, InputRegisterOwnedByAnotherClientIsInUse) {
   // The written registers read back through an output recipe.
   second.SetupOutputs(125, {"input_int_register_24", "input_double_register_24"});
   second.Start();
-  const auto sample = second.Receive(Milliseconds(2000));
+  const auto sample = second.Receive(net::Milliseconds(2000));
   ASSERT_TRUE(sample);
   EXPECT_EQ(std::get<int32_t>(sample->package.values[0]), 7);
   EXPECT_EQ(std::get<double>(sample->package.values[1]), 2.5);
@@ -162,7 +162,7 @@ TEST_F(RobotClientEmulatorTest, StreamsStateAtTheControllerRate) {
   auto client = StreamingClient();
   std::vector<robot::RobotState> states;
   while (states.size() < 50) {
-    const auto sample = client.Receive(Milliseconds(2000));
+    const auto sample = client.Receive(net::Milliseconds(2000));
     ASSERT_TRUE(sample);
     states.push_back(sample->state);
   }
@@ -196,7 +196,7 @@ TEST_F(RobotClientEmulatorTest, DashboardPowerOnAndBrakeReleaseSequence) {
   EXPECT_EQ(dashboard.Command("fly away"), "could not understand: 'fly away'");
   // RTDE sees the same state.
   auto client = StreamingClient();
-  const auto sample = client.ReceiveLatest(Milliseconds(2000));
+  const auto sample = client.ReceiveLatest(net::Milliseconds(2000));
   ASSERT_TRUE(sample);
   EXPECT_EQ(sample->state.robot_mode, RobotMode::kRunning);
   EXPECT_EQ(sample->state.robot_status_bits & robot::kStatusPowerOn, robot::kStatusPowerOn);
@@ -209,7 +209,7 @@ TEST_F(RobotClientEmulatorTest, MoveJArrivesAndTcpPoseIsTheTrueArmsForwardKinema
   const robot::Joints target = {0.3, -1.2, 1.4, -1.9, -1.4, 0.5};
   script.Send(robot::MoveJProgram(target, 3.0, 1.5));
   auto monitor = robot::MotionMonitor::ForJoints(target);
-  const auto outcome = robot::WaitForMotion(client, monitor, Milliseconds(5000));
+  const auto outcome = robot::WaitForMotion(client, monitor, net::Milliseconds(5000));
   ASSERT_EQ(outcome.status, MotionStatus::kReached) << outcome.detail;
   const robot::RobotState& state = outcome.last_state;
   const JointVector q = ToJoints(state.actual_q);
@@ -227,13 +227,13 @@ TEST_F(RobotClientEmulatorTest, MoveJArrivesAndTcpPoseIsTheTrueArmsForwardKinema
   const auto vs_nominal = kinematics::ComparePoses(
       reported, kinematics::ForwardKinematics(kinematics::NominalUr5(), q));
   EXPECT_GT(vs_nominal.translation_m, 5e-4);
-  EXPECT_TRUE(script.Poll(Milliseconds(50)).empty());  // no runtime error
+  EXPECT_TRUE(script.Poll(net::Milliseconds(50)).empty());  // no runtime error
 }
 
 TEST_F(RobotClientEmulatorTest, MoveLReachesThePose) {
   PowerUp();
   auto client = StreamingClient();
-  const auto start = client.ReceiveLatest(Milliseconds(2000));
+  const auto start = client.ReceiveLatest(net::Milliseconds(2000));
   ASSERT_TRUE(start);
   Eigen::Isometry3d goal = robot::PoseFromVector(start->state.actual_tcp_pose);
   goal.translation() += Eigen::Vector3d(0.05, 0.03, -0.04);
@@ -241,7 +241,7 @@ TEST_F(RobotClientEmulatorTest, MoveLReachesThePose) {
   robot::ScriptClient script(kHost, emulator_->secondary_port());
   script.Send(robot::MoveLProgram(goal_vector, 1.0, 0.2));
   auto monitor = robot::MotionMonitor::ForPose(goal_vector, {.position_m = 1e-4});
-  const auto outcome = robot::WaitForMotion(client, monitor, Milliseconds(5000));
+  const auto outcome = robot::WaitForMotion(client, monitor, net::Milliseconds(5000));
   ASSERT_EQ(outcome.status, MotionStatus::kReached) << outcome.detail;
 }
 
@@ -256,7 +256,7 @@ TEST_F(RobotClientEmulatorTest, ProtectiveStopMidMoveIsReportedAndRecoverable) {
   emulator_->ArmProtectiveStopAt(0.4);
   script.Send(robot::MoveJProgram(target, 2.0, 1.0));
   auto monitor = robot::MotionMonitor::ForJoints(target);
-  const auto stopped = robot::WaitForMotion(client, monitor, Milliseconds(5000));
+  const auto stopped = robot::WaitForMotion(client, monitor, net::Milliseconds(5000));
   ASSERT_EQ(stopped.status, MotionStatus::kSafetyStop) << stopped.detail;
   EXPECT_NE(stopped.detail.find("PROTECTIVE_STOP"), std::string::npos);
   const double stopped_at = stopped.last_state.actual_q[0];
@@ -264,22 +264,22 @@ TEST_F(RobotClientEmulatorTest, ProtectiveStopMidMoveIsReportedAndRecoverable) {
   EXPECT_LT(stopped_at, 0.5);
   EXPECT_EQ(dashboard.GetSafetyMode(), SafetyMode::kProtectiveStop);
   // Not retried behind our back: the arm stays where it stopped.
-  const auto later = client.ReceiveLatest(Milliseconds(2000));
+  const auto later = client.ReceiveLatest(net::Milliseconds(2000));
   ASSERT_TRUE(later);
   EXPECT_NEAR(later->state.actual_q[0], stopped_at, 3 * kNoise);
   EXPECT_EQ(later->state.runtime_state, robot::RuntimeState::kStopped);
   // A program sent while stopped is refused with a runtime error.
   script.Send(robot::MoveJProgram(target, 2.0, 1.0));
-  const auto refused = script.Poll(Milliseconds(2000));
+  const auto refused = script.Poll(net::Milliseconds(2000));
   ASSERT_EQ(refused.size(), 1u);
   EXPECT_NE(refused[0].text.find("PROTECTIVE_STOP"), std::string::npos);
 
   dashboard.UnlockProtectiveStop();
   EXPECT_EQ(dashboard.GetSafetyMode(), SafetyMode::kNormal);
-  client.ReceiveLatest(Milliseconds(2000));  // drop states from before the unlock
+  client.ReceiveLatest(net::Milliseconds(2000));  // drop states from before the unlock
   script.Send(robot::MoveJProgram(target, 2.0, 1.0));
   auto resumed_monitor = robot::MotionMonitor::ForJoints(target);
-  const auto resumed = robot::WaitForMotion(client, resumed_monitor, Milliseconds(5000));
+  const auto resumed = robot::WaitForMotion(client, resumed_monitor, net::Milliseconds(5000));
   ASSERT_EQ(resumed.status, MotionStatus::kReached) << resumed.detail;
 }
 
@@ -293,7 +293,7 @@ TEST_F(RobotClientEmulatorTest, StopJPreemptsTheRunningMoveAndBrakesToRest) {
   // Wait until the move is well under way (0.5 rad done, cruising at 1 rad/s).
   double q0 = 0;
   for (int i = 0; i < 1000 && q0 < 0.5; ++i) {
-    const auto sample = client.Receive(Milliseconds(2000));
+    const auto sample = client.Receive(net::Milliseconds(2000));
     ASSERT_TRUE(sample);
     q0 = sample->state.actual_q[0];
   }
@@ -301,7 +301,7 @@ TEST_F(RobotClientEmulatorTest, StopJPreemptsTheRunningMoveAndBrakesToRest) {
   // Braking from <= 1 rad/s at 4 rad/s^2 takes <= 0.125 rad; allow for samples in flight.
   robot::RobotState state;
   for (int i = 0; i < 1000; ++i) {
-    const auto sample = client.Receive(Milliseconds(2000));
+    const auto sample = client.Receive(net::Milliseconds(2000));
     ASSERT_TRUE(sample);
     state = sample->state;
     if (state.runtime_state == robot::RuntimeState::kStopped) break;
@@ -316,7 +316,7 @@ TEST_F(RobotClientEmulatorTest, UnsupportedScriptAnswersWithARuntimeError) {
   PowerUp();
   robot::ScriptClient script(kHost, emulator_->secondary_port());
   script.Send("def bad():\n  movej([0,-1.57,1.57,-1.57,-1.57,0])\n  set_tool_voltage(24)\nend\n");
-  const auto messages = script.Poll(Milliseconds(2000));
+  const auto messages = script.Poll(net::Milliseconds(2000));
   ASSERT_EQ(messages.size(), 1u);
   EXPECT_EQ(messages[0].message_type, robot::primary::kRuntimeException);
   EXPECT_EQ(messages[0].line, 3);
@@ -327,7 +327,7 @@ TEST_F(RobotClientEmulatorTest, UnsupportedScriptAnswersWithARuntimeError) {
 
 TEST_F(RobotClientEmulatorTest, SecondaryInterfaceAnnouncesVersionAndTheTrueKinematics) {
   robot::ScriptClient script(kHost, emulator_->secondary_port());
-  const auto info = script.WaitForKinematics(Milliseconds(2000));
+  const auto info = script.WaitForKinematics(net::Milliseconds(2000));
   ASSERT_TRUE(info);
   ASSERT_TRUE(script.version());
   EXPECT_EQ(script.version()->project_name, "URControl");
@@ -345,21 +345,21 @@ TEST_F(RobotClientEmulatorTest, SecondaryInterfaceAnnouncesVersionAndTheTrueKine
 TEST_F(RobotClientEmulatorTest, SocketDropIsReportedAsADisconnect) {
   auto client = StreamingClient();
   robot::DashboardClient dashboard(kHost, emulator_->dashboard_port());
-  ASSERT_TRUE(client.Receive(Milliseconds(2000)));
+  ASSERT_TRUE(client.Receive(net::Milliseconds(2000)));
   emulator_->DropConnections();
   std::string error;
   try {
-    for (int i = 0; i < 1000; ++i) client.Receive(Milliseconds(2000));
-  } catch (const robot::ConnectionError& dropped) {
+    for (int i = 0; i < 1000; ++i) client.Receive(net::Milliseconds(2000));
+  } catch (const net::ConnectionError& dropped) {
     error = dropped.what();
   }
   EXPECT_NE(error.find("connection closed by peer"), std::string::npos) << error;
   EXPECT_NE(error.find(fmt::format("127.0.0.1:{}", emulator_->rtde_port())), std::string::npos)
       << error;
-  EXPECT_THROW(dashboard.GetRobotMode(), robot::ConnectionError);
+  EXPECT_THROW(dashboard.GetRobotMode(), net::ConnectionError);
   // The listeners stay up: a new client connects and streams again.
   auto again = StreamingClient();
-  EXPECT_TRUE(again.Receive(Milliseconds(2000)));
+  EXPECT_TRUE(again.Receive(net::Milliseconds(2000)));
 }
 
 TEST(RobotClientEmulator, ConnectingToAClosedPortNamesIt) {

@@ -9,8 +9,8 @@
 #include <cstdio>
 #include <thread>
 
+#include "core/net/tcp_socket.h"
 #include "drivers/client/cell_client.h"
-#include "drivers/robot/tcp_socket.h"
 #include "tests/drivers/robot/robot_node_harness.h"
 
 namespace avc::robot::testing {
@@ -57,7 +57,7 @@ TEST(RobotNodeRecovery, DroppedControllerIsReconnectedAndCommandsRefusedMeanwhil
 // after the node; the node is configured for them.
 sim::ur5::Ur5EmulatorOptions PortsForALaterEmulator(RobotNodeHarness& h) {
   auto options = EmulatorOptions();
-  TcpListener rtde("127.0.0.1", 0), primary("127.0.0.1", 0), secondary("127.0.0.1", 0),
+  net::TcpListener rtde("127.0.0.1", 0), primary("127.0.0.1", 0), secondary("127.0.0.1", 0),
       dashboard("127.0.0.1", 0);
   options.rtde_port = rtde.port();
   options.primary_port = primary.port();

@@ -1,7 +1,7 @@
 // RTDE codec: round trips and byte vectors written by hand from the protocol description
 // (uint16 size incl. header, uint8 type, big-endian payload).
 
-#include "drivers/robot/rtde_protocol.h"
+#include "drivers/robot/protocol/rtde_protocol.h"
 
 #include <gtest/gtest.h>
 
@@ -66,13 +66,27 @@ TEST(RtdeProtocol, NameListAbove2048BytesIsRefused) {
 
 TEST(RtdeProtocol, RecipeReplyKeepsNotFoundAndInUseMarkers) {
   const Bytes payload = Concat({0x01}, Ascii("DOUBLE,NOT_FOUND,IN_USE"));
-  const RecipeReply reply = DecodeRecipeReply(payload);
+  const RecipeReply reply = DecodeRecipeReply(payload, PacketType::kSetupInputs, 2);
   EXPECT_EQ(reply.recipe_id, 1);
   EXPECT_EQ(reply.types, (std::vector<std::string>{"DOUBLE", "NOT_FOUND", "IN_USE"}));
-  EXPECT_EQ(EncodeRecipeReply(reply), payload);
+  EXPECT_EQ(EncodeRecipeReply(reply, PacketType::kSetupInputs, 2), payload);
   EXPECT_EQ(ParseValueType("VECTOR6D"), ValueType::kVector6d);
   EXPECT_EQ(ParseValueType("NOT_FOUND"), std::nullopt);
   EXPECT_EQ(ParseValueType("IN_USE"), std::nullopt);
+}
+
+// A v1 'O' reply is the types alone; 'I' replies keep their recipe id at v1.
+TEST(RtdeProtocol, RecipeReplyHasNoIdOnlyForVersion1Outputs) {
+  const Bytes types = Ascii("DOUBLE,VECTOR6D");
+  const RecipeReply outputs_v1 = DecodeRecipeReply(types, PacketType::kSetupOutputs, 1);
+  EXPECT_EQ(outputs_v1.recipe_id, 0);
+  EXPECT_EQ(outputs_v1.types, (std::vector<std::string>{"DOUBLE", "VECTOR6D"}));
+  EXPECT_EQ(EncodeRecipeReply({7, outputs_v1.types}, PacketType::kSetupOutputs, 1), types);
+  const Bytes with_id = Concat({0x02}, types);
+  EXPECT_EQ(DecodeRecipeReply(with_id, PacketType::kSetupOutputs, 2).recipe_id, 2);
+  EXPECT_EQ(DecodeRecipeReply(with_id, PacketType::kSetupInputs, 1).recipe_id, 2);
+  EXPECT_EQ(EncodeRecipeReply({2, outputs_v1.types}, PacketType::kSetupInputs, 1), with_id);
+  EXPECT_THROW(DecodeRecipeReply(with_id, PacketType::kStart, 2), std::invalid_argument);
 }
 
 TEST(RtdeProtocol, SetupInputsRoundTrip) {

@@ -1,7 +1,7 @@
 // The LT360 grammar: reply parsing, command formatting and matching through the table, the
 // JSON table loader and the CR/NUL frame splitter.
 
-#include "drivers/turntable/lt360_protocol.h"
+#include "drivers/turntable/protocol/lt360_protocol.h"
 
 #include <gtest/gtest.h>
 
@@ -138,8 +138,8 @@ TEST(Lt360Protocol, LoadsTablesFromJson) {
 // The shipped JSON is the starting point for transcribing the EX manual: it must stay equal to
 // the built-in defaults.
 TEST(Lt360Protocol, ShippedTableFileEqualsTheDefaults) {
-  const CommandTable file =
-      LoadCommandTable(testing::SourceDir() / "drivers/turntable/lt360_command_table.json");
+  const CommandTable file = LoadCommandTable(testing::SourceDir() /
+                                             "drivers/turntable/protocol/lt360_command_table.json");
   const CommandTable defaults;
   for (const auto kind :
        {CommandKind::kGetPosition, CommandKind::kGetMoving, CommandKind::kGotoShortest,
