@@ -4,17 +4,12 @@
 
 #include <stdexcept>
 
+#include "core/util/trim.h"
+
 namespace avc::robot {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-std::string Trim(std::string_view text) {
-  const size_t begin = text.find_first_not_of(" \t\r\n");
-  if (begin == std::string_view::npos) return {};
-  const size_t end = text.find_last_not_of(" \t\r\n");
-  return std::string(text.substr(begin, end - begin + 1));
-}
 
 }  // namespace
 
@@ -24,7 +19,7 @@ std::string ReplyValue(const std::string& reply, std::string_view prefix) {
     throw std::runtime_error(
         fmt::format("dashboard reply '{}' does not start with '{}'", reply, head));
   }
-  return Trim(std::string_view(reply).substr(head.size()));
+  return std::string(TrimSpace(std::string_view(reply).substr(head.size())));
 }
 
 DashboardClient::DashboardClient(const std::string& host, uint16_t port, net::Milliseconds timeout)
@@ -51,7 +46,7 @@ std::string DashboardClient::ReadLine(const std::string& step) {
   while (true) {
     const size_t end = buffer_.find('\n');
     if (end != std::string::npos) {
-      std::string line = Trim(std::string_view(buffer_).substr(0, end));
+      std::string line = std::string(TrimSpace(std::string_view(buffer_).substr(0, end)));
       buffer_.erase(0, end + 1);
       return line;
     }

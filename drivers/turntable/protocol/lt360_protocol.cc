@@ -10,6 +10,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "core/util/trim.h"
+
 namespace avc::turntable {
 namespace {
 
@@ -34,16 +36,6 @@ std::string_view ArgumentField(CommandKind kind) {
   }
 }
 
-std::string_view Trim(std::string_view text) {
-  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front()))) {
-    text.remove_prefix(1);
-  }
-  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) {
-    text.remove_suffix(1);
-  }
-  return text;
-}
-
 // Replies are quoted with control characters escaped, so a garbled reply is readable.
 std::string Quote(std::string_view text) {
   std::string out = "'";
@@ -59,7 +51,7 @@ std::string Quote(std::string_view text) {
 
 // A number with an optional sign, digits and an optional fraction; nullopt otherwise.
 std::optional<double> ParseNumber(std::string_view text) {
-  text = Trim(text);
+  text = TrimSpace(text);
   if (text.empty()) return std::nullopt;
   std::string_view digits = text;
   if (digits.front() == '+') digits.remove_prefix(1);
@@ -229,7 +221,7 @@ std::string FormatCommand(const CommandTable& table, CommandKind kind, double va
 }
 
 std::optional<ParsedCommand> MatchCommand(const CommandTable& table, std::string_view line) {
-  line = Trim(line);
+  line = TrimSpace(line);
   for (const CommandKind kind : kAllKinds) {
     const std::string& text = table.Template(kind);
     if (text.empty()) continue;
@@ -254,7 +246,7 @@ std::optional<ParsedCommand> MatchCommand(const CommandTable& table, std::string
 }
 
 int ParsePositionTenths(std::string_view reply) {
-  const std::string_view text = Trim(reply);
+  const std::string_view text = TrimSpace(reply);
   size_t i = 0;
   bool negative = false;
   if (i < text.size() && (text[i] == '+' || text[i] == '-')) negative = text[i++] == '-';
@@ -282,7 +274,7 @@ std::string FormatPositionTenths(int tenths) {
 }
 
 Motion ParseMotion(std::string_view reply) {
-  const std::string_view text = Trim(reply);
+  const std::string_view text = TrimSpace(reply);
   if (EqualsIgnoreCase(text, "NO")) return Motion::kNone;
   if (EqualsIgnoreCase(text, "CW")) return Motion::kCw;
   if (EqualsIgnoreCase(text, "CCW")) return Motion::kCcw;

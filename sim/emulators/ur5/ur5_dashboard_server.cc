@@ -4,6 +4,8 @@
 
 #include <cctype>
 
+#include "core/util/trim.h"
+
 namespace avc::sim::ur5 {
 namespace {
 
@@ -12,17 +14,10 @@ std::string Lower(std::string text) {
   return text;
 }
 
-std::string Trim(const std::string& text) {
-  const size_t begin = text.find_first_not_of(" \t\r\n");
-  if (begin == std::string::npos) return {};
-  const size_t end = text.find_last_not_of(" \t\r\n");
-  return text.substr(begin, end - begin + 1);
-}
-
 }  // namespace
 
 std::string DashboardReply(Ur5Controller& controller, const std::string& line, bool& hang_up) {
-  const std::string command = Lower(Trim(line));
+  const std::string command = Lower(std::string(TrimSpace(line)));
   if (command == "power on") {
     controller.PowerOn();
     return "Powering on";
@@ -72,7 +67,7 @@ std::string DashboardReply(Ur5Controller& controller, const std::string& line, b
     hang_up = true;
     return "Disconnected";
   }
-  return fmt::format("could not understand: '{}'", Trim(line));
+  return fmt::format("could not understand: '{}'", std::string(TrimSpace(line)));
 }
 
 DashboardSession::DashboardSession(int id, net::TcpStream stream, Ur5Controller& controller)

@@ -8,22 +8,17 @@
 #include <utility>
 #include <variant>
 
+#include "core/util/trim.h"
+
 namespace avc::sim::ur5 {
 namespace {
-
-std::string Trim(const std::string& text) {
-  const size_t begin = text.find_first_not_of(" \t\r");
-  if (begin == std::string::npos) return {};
-  const size_t end = text.find_last_not_of(" \t\r");
-  return text.substr(begin, end - begin + 1);
-}
 
 bool StartsBlock(const std::string& line) {
   return line.rfind("def ", 0) == 0 || line.rfind("sec ", 0) == 0;
 }
 
 std::optional<double> Number(const std::string& text) {
-  const std::string trimmed = Trim(text);
+  const std::string trimmed(TrimSpace(text));
   double value = 0;
   const char* end = trimmed.data() + trimmed.size();
   const auto [ptr, ec] = std::from_chars(trimmed.data(), end, value);
@@ -42,21 +37,22 @@ std::vector<std::string> SplitArguments(const std::string& text) {
     if (c == '[') ++depth;
     if (c == ']') --depth;
     if (c == ',' && depth == 0) {
-      parts.push_back(Trim(current));
+      parts.push_back(std::string(TrimSpace(current)));
       current.clear();
     } else {
       current += c;
     }
   }
-  if (!Trim(current).empty() || !parts.empty()) parts.push_back(Trim(current));
+  if (!TrimSpace(current).empty() || !parts.empty())
+    parts.push_back(std::string(TrimSpace(current)));
   return parts;
 }
 
 // "[a, b, ...]" or "p[a, b, ...]" with six numbers.
 std::optional<std::array<double, 6>> Vector6(const std::string& text, bool& is_pose) {
-  std::string body = Trim(text);
+  std::string body = std::string(TrimSpace(text));
   is_pose = !body.empty() && body[0] == 'p';
-  if (is_pose) body = Trim(body.substr(1));
+  if (is_pose) body = std::string(TrimSpace(body.substr(1)));
   if (body.size() < 2 || body.front() != '[' || body.back() != ']') return std::nullopt;
   const auto entries = SplitArguments(body.substr(1, body.size() - 2));
   if (entries.size() != 6) return std::nullopt;
@@ -75,7 +71,7 @@ std::variant<ScriptStatement, std::string> ParseStatement(const std::string& lin
   if (open == std::string::npos || line.back() != ')') {
     return fmt::format("unsupported statement '{}'", line);
   }
-  const std::string name = Trim(line.substr(0, open));
+  const std::string name(TrimSpace(line.substr(0, open)));
   const auto arguments = SplitArguments(line.substr(open + 1, line.size() - open - 2));
   ScriptStatement statement;
   if (name == "movej") {
@@ -109,7 +105,7 @@ std::variant<ScriptStatement, std::string> ParseStatement(const std::string& lin
     std::string key = i - 1 < kNames.size() ? kNames[i - 1] : "";
     std::string value_text = arguments[i];
     if (const size_t eq = arguments[i].find('='); eq != std::string::npos) {
-      key = Trim(arguments[i].substr(0, eq));
+      key = std::string(TrimSpace(arguments[i].substr(0, eq)));
       value_text = arguments[i].substr(eq + 1);
     }
     const auto value = Number(value_text);
@@ -137,18 +133,18 @@ ScriptProgram ParseScriptUnit(const std::vector<std::string>& lines) {
   if (lines.empty()) return program;
   size_t first = 0, last = lines.size();
   if (StartsBlock(lines.front())) {
-    const std::string header = Trim(lines.front().substr(4));
+    const std::string header(TrimSpace(lines.front().substr(4)));
     const size_t paren = header.find('(');
     if (paren == std::string::npos || header.back() != ':') {
       program.error = ScriptError{1, 1, fmt::format("malformed program header '{}'", lines[0])};
       return program;
     }
-    program.name = Trim(header.substr(0, paren));
+    program.name = std::string(TrimSpace(header.substr(0, paren)));
     first = 1;
     last = lines.size() - 1;  // the column-0 "end"
   }
   for (size_t i = first; i < last; ++i) {
-    const std::string line = Trim(lines[i]);
+    const std::string line(TrimSpace(lines[i]));
     if (line.empty() || line[0] == '#') continue;
     const int line_number = static_cast<int>(i) + 1;
     auto parsed = ParseStatement(line);
@@ -176,7 +172,7 @@ std::optional<std::vector<std::string>> ScriptAssembler::Next() {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (in_block_) {
       block_.push_back(line);
-      if (Trim(line) == "end" && !line.empty() && line[0] == 'e') {
+      if (TrimSpace(line) == "end" && !line.empty() && line[0] == 'e') {
         in_block_ = false;
         return std::exchange(block_, {});
       }
@@ -187,7 +183,7 @@ std::optional<std::vector<std::string>> ScriptAssembler::Next() {
       block_ = {line};
       continue;
     }
-    if (!Trim(line).empty()) return std::vector<std::string>{line};
+    if (!TrimSpace(line).empty()) return std::vector<std::string>{line};
   }
 }
 
