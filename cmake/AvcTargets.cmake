@@ -11,7 +11,7 @@ if(AVC_WERROR_ENABLED)
   list(APPEND AVC_WARNINGS -Werror)
 endif()
 
-# Glue code (tests, the CLI's subcommands) runs for milliseconds but is template-heavy (gtest,
+# Glue code (tests, the CLI's subcommands, the benchmarks' drivers) runs for milliseconds but is template-heavy (gtest,
 # CLI11, nlohmann::json): -O3 on it costs about a quarter of its compile time for nothing, so in
 # Release it gets -O1. The libraries, where the work is done, keep -O3.
 set(AVC_GLUE_OPTIMIZATION $<$<CONFIG:Release>:-O1>)
@@ -22,8 +22,17 @@ if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND CMAKE_CXX_COMPILER_VERSION VERSION_L
        $<$<CONFIG:Release>:-Wno-stringop-overflow> $<$<CONFIG:Release>:-Wno-stringop-overread>)
 endif()
 
+# Unity builds: each target's sources are compiled AVC_UNITY_BATCH_SIZE at a time as one
+# translation unit, so the heavy third-party headers (Eigen, OpenCV, PCL, CGAL, nlohmann::json,
+# CLI11) are parsed and their templates instantiated once per batch instead of once per file
+# (BENCHMARKS.md, build). Sources in a target therefore share one namespace scope: helpers in
+# anonymous namespaces need names unique within their library.
+set(AVC_UNITY_BATCH_SIZE 16 CACHE STRING "Sources per unity translation unit")
+
 function(_avc_policy target)
   target_compile_options(${target} PRIVATE ${AVC_WARNINGS})
+  set_target_properties(${target} PROPERTIES UNITY_BUILD ${AVC_UNITY_BUILD_ENABLED}
+                                             UNITY_BUILD_BATCH_SIZE ${AVC_UNITY_BATCH_SIZE})
   # Includes are rooted at the repository: #include "core/bus/bus.h".
   target_include_directories(${target} PUBLIC ${PROJECT_SOURCE_DIR})
 endfunction()
@@ -33,6 +42,11 @@ function(avc_add_library)
   cmake_parse_arguments(ARG "" "NAME" "SRCS;DEPS;PRIVATE_DEPS" ${ARGN})
   add_library(${ARG_NAME} STATIC ${ARG_SRCS})
   _avc_policy(${ARG_NAME})
+  # The CLI's and the benchmarks' own code only sequences and prints: glue optimization.
+  file(RELATIVE_PATH folder ${PROJECT_SOURCE_DIR} ${CMAKE_CURRENT_SOURCE_DIR})
+  if(folder MATCHES "^(tools|bench)(/|$)")
+    target_compile_options(${ARG_NAME} PRIVATE ${AVC_GLUE_OPTIMIZATION})
+  endif()
   target_link_libraries(${ARG_NAME} PUBLIC ${ARG_DEPS} PRIVATE ${ARG_PRIVATE_DEPS})
   set_target_properties(${ARG_NAME} PROPERTIES POSITION_INDEPENDENT_CODE ON)
 endfunction()

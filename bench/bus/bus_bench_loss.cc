@@ -44,7 +44,7 @@ double ChunksPerProduct(const PhaseResult& phase) {
              : 0;
 }
 
-void PrintTable(const std::vector<ConfigResult>& results) {
+void PrintLossTable(const std::vector<ConfigResult>& results) {
   const ConfigResult& reference = results.front();
   std::cout << fmt::format(
       "{:<20} {:>5} {:>9} {:>4} {:>4} {:>6} {:>7} {:>7} {:>6} {:>9} {:>9} {:>6} {:>6}\n",
@@ -115,7 +115,7 @@ int RunLossBenchmark(const LossBenchOptions& options, const std::filesystem::pat
     log::Info("configuration {}: {}", config.name, config.description);
     results.push_back(RunConfig(options.link, config, work));
   }
-  PrintTable(results);
+  PrintLossTable(results);
   if (!results.front().phases.empty()) {
     std::cout << fmt::format("products of {} bytes in {:g} chunks of at most {} bytes\n",
                              options.size_bytes, ChunksPerProduct(results.front().phases.front()),

@@ -17,7 +17,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Row {
+struct MergeRow {
   MergeCase merge_case;
   IsolatedResult run;
 };
@@ -26,7 +26,7 @@ const char* SourceName(RawSource source) {
   return source == RawSource::kPatchMvs ? "patch MVS" : "simulated";
 }
 
-void PrintTable(const std::vector<Row>& rows, double outlier_fraction) {
+void PrintMergeTable(const std::vector<MergeRow>& rows, double outlier_fraction) {
   std::cout << fmt::format(
       "\nModel merging with {:.0f} % injected outliers (distances to the plant's organs;\n"
       "removed: outside the proxy, or in occupied voxels holding fewer than 4 points)\n",
@@ -34,7 +34,7 @@ void PrintTable(const std::vector<Row>& rows, double outlier_fraction) {
   std::cout << fmt::format("{:<10} {:<10} {:>6} {:>8} {:>8} {:>8} {:>8} {:>9} {:>9} {:>7} {:>8}\n",
                            "plant", "raw cloud", "voxel", "raw", "merged", "outside", "sparse",
                            "raw RMSE", "mrg RMSE", "ratio", "merge s");
-  for (const Row& row : rows) {
+  for (const MergeRow& row : rows) {
     const std::string lead = fmt::format("{:<10} {:<10}", row.merge_case.dataset_name,
                                          SourceName(row.merge_case.source));
     if (!row.run.ok) {
@@ -92,7 +92,7 @@ int RunMergeBenchmark(const std::vector<std::string>& arguments) {
   const fs::path work =
       own_work_dir ? fs::temp_directory_path() / fmt::format("avc-bench-merge-{}", getpid())
                    : fs::path(work_dir);
-  std::vector<Row> rows;
+  std::vector<MergeRow> rows;
   bool failed = false;
   for (const std::string& preset : presets) {
     const std::optional<fs::path> rendered = EnsureSimulatedScan(work, preset);
@@ -111,14 +111,14 @@ int RunMergeBenchmark(const std::vector<std::string>& arguments) {
       failed = failed || !rows.back().run.ok;
     }
   }
-  PrintTable(rows, outlier_fraction);
+  PrintMergeTable(rows, outlier_fraction);
   if (own_work_dir) {
     std::error_code ignored;
     fs::remove_all(work, ignored);
   }
   if (json) {
     nlohmann::json list = nlohmann::json::array();
-    for (const Row& row : rows) {
+    for (const MergeRow& row : rows) {
       nlohmann::json entry = {{"dataset", row.merge_case.dataset_name},
                               {"source", SourceName(row.merge_case.source)},
                               {"peak_memory_mb", row.run.peak_memory_mb}};

@@ -26,13 +26,13 @@ struct PmvsReference {
 };
 constexpr PmvsReference kPmvs[] = {{0, 69737, 24.0, 0.904}, {1, 20909, 5.6, 0.854}};
 
-struct Row {
+struct MvsRow {
   MvsCase mvs_case;
   std::vector<IsolatedResult> runs;
 };
 
 // Median over the successful runs of one figure; NaN when none has it.
-double MedianOf(const Row& row, const char* key) {
+double MedianOf(const MvsRow& row, const char* key) {
   std::vector<double> values;
   for (const IsolatedResult& run : row.runs) {
     if (run.ok && run.result.contains(key)) {
@@ -43,7 +43,7 @@ double MedianOf(const Row& row, const char* key) {
   return values.empty() ? std::nan("") : Summarize(values).median;
 }
 
-double PeakMemory(const Row& row) {
+double PeakMemory(const MvsRow& row) {
   std::vector<double> values;
   for (const IsolatedResult& run : row.runs) {
     if (run.ok) values.push_back(run.peak_memory_mb);
@@ -51,8 +51,8 @@ double PeakMemory(const Row& row) {
   return values.empty() ? std::nan("") : Summarize(values).median;
 }
 
-Row RunRow(const MvsCase& mvs_case, int repeats) {
-  Row row{mvs_case, {}};
+MvsRow RunRow(const MvsCase& mvs_case, int repeats) {
+  MvsRow row{mvs_case, {}};
   for (int r = 0; r < repeats; ++r) {
     std::cerr << fmt::format("  {} {} level {} run {}/{}\n", mvs_case.dataset_name,
                              builder::MvsMethodName(mvs_case.method), mvs_case.level, r + 1,
@@ -66,7 +66,7 @@ Row RunRow(const MvsCase& mvs_case, int repeats) {
   return row;
 }
 
-nlohmann::json RowJson(const Row& row) {
+nlohmann::json RowJson(const MvsRow& row) {
   nlohmann::json json = {{"dataset", row.mvs_case.dataset_name},
                          {"method", builder::MvsMethodName(row.mvs_case.method)},
                          {"requested_level", row.mvs_case.level},
@@ -87,7 +87,7 @@ std::string Cell(double value, const char* format) {
   return std::isnan(value) ? "-" : fmt::format(fmt::runtime(format), value);
 }
 
-void PrintDinoTable(const std::vector<Row>& rows) {
+void PrintDinoTable(const std::vector<MvsRow>& rows) {
   std::cout << "\nMiddlebury dinoSparseRing, 16 images 640x480 (medians; PMVS2 = the issue's "
                "reference run)\n";
   std::cout << fmt::format("{:<14} {:>5} {:>8} {:>9} {:>8} {:>8} {:>8} {:>8}\n", "method", "level",
@@ -97,7 +97,7 @@ void PrintDinoTable(const std::vector<Row>& rows) {
                              "PMVS2 (ref.)", ref.level, ref.points, ref.points / 16,
                              100 * ref.inside, ref.seconds, "-", "-");
   }
-  for (const Row& row : rows) {
+  for (const MvsRow& row : rows) {
     std::cout << fmt::format(
         "{:<14} {:>5} {:>8} {:>9} {:>8} {:>8} {:>8} {:>8}{}\n",
         builder::MvsMethodName(row.mvs_case.method), row.mvs_case.level,
@@ -170,12 +170,12 @@ void PrintPprTable(const std::vector<PprRow>& rows) {
   }
 }
 
-void PrintSimTable(const std::vector<Row>& rows) {
+void PrintSimTable(const std::vector<MvsRow>& rows) {
   std::cout << "\nSimulated plants, 30 views 1280x960, against the plant's ground truth\n";
   std::cout << fmt::format("{:<10} {:<12} {:>8} {:>8} {:>7} {:>7} {:>8} {:>7} {:>8}\n", "plant",
                            "method", "points", "per img", "P@1mm", "R@2mm", "mean mm", "wall s",
                            "peak MB");
-  for (const Row& row : rows) {
+  for (const MvsRow& row : rows) {
     std::cout << fmt::format(
         "{:<10} {:<12} {:>8} {:>8} {:>7} {:>7} {:>8} {:>7} {:>8}{}\n", row.mvs_case.dataset_name,
         builder::MvsMethodName(row.mvs_case.method), Cell(MedianOf(row, "points"), "{:.0f}"),
@@ -230,7 +230,7 @@ int RunMvsBenchmark(const std::vector<std::string>& arguments) {
 
   nlohmann::json report = {{"benchmark", "mvs"}};
   const fs::path dino = fs::path(data_dir) / "middlebury" / "dinoSparseRing";
-  std::vector<Row> dino_rows;
+  std::vector<MvsRow> dino_rows;
   if (!no_dino) {
     if (!fs::exists(dino)) {
       std::cerr << "dinoSparseRing not found under " << dino << " (--data); skipped\n";
@@ -250,8 +250,8 @@ int RunMvsBenchmark(const std::vector<std::string>& arguments) {
   const fs::path work = own_work_dir
                             ? fs::temp_directory_path() / fmt::format("avc-bench-mvs-{}", getpid())
                             : fs::path(work_dir);
-  std::vector<Row> sim_rows;
-  std::vector<Row> scaling_rows;
+  std::vector<MvsRow> sim_rows;
+  std::vector<MvsRow> scaling_rows;
   std::vector<PprRow> ppr_rows;
   for (const std::string& preset : presets) {
     const std::optional<fs::path> rendered = EnsureSimulatedScan(work, preset);
@@ -287,7 +287,7 @@ int RunMvsBenchmark(const std::vector<std::string>& arguments) {
   for (const auto& [key, rows] :
        {std::pair{"dino", &dino_rows}, {"simulated", &sim_rows}, {"scaling", &scaling_rows}}) {
     nlohmann::json list = nlohmann::json::array();
-    for (const Row& row : *rows) list.push_back(RowJson(row));
+    for (const MvsRow& row : *rows) list.push_back(RowJson(row));
     report[key] = list;
   }
   nlohmann::json ppr = nlohmann::json::array();
@@ -296,7 +296,7 @@ int RunMvsBenchmark(const std::vector<std::string>& arguments) {
   if (json) std::cout << report.dump() << "\n";
   bool failed = false;
   for (const auto* rows : {&dino_rows, &sim_rows, &scaling_rows}) {
-    for (const Row& row : *rows) failed = failed || row.runs.empty() || !row.runs.back().ok;
+    for (const MvsRow& row : *rows) failed = failed || row.runs.empty() || !row.runs.back().ok;
   }
   for (const PprRow& row : ppr_rows) failed = failed || row.runs.empty() || !row.runs.back().ok;
   return failed ? 1 : 0;

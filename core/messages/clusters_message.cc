@@ -10,8 +10,6 @@
 namespace avc::messages {
 namespace {
 
-constexpr int8_t kFloat = avc::point_field_t::TYPE_FLOAT32;
-constexpr int8_t kByte = avc::point_field_t::TYPE_UINT8;
 constexpr int8_t kInt = avc::point_field_t::TYPE_INT32;
 
 const std::vector<FieldSpec>& ClusterFields() {

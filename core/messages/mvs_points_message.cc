@@ -9,9 +9,6 @@
 namespace avc::messages {
 namespace {
 
-constexpr int8_t kFloat = avc::point_field_t::TYPE_FLOAT32;
-constexpr int8_t kByte = avc::point_field_t::TYPE_UINT8;
-
 // 6 floats, 3 colour bytes, a pad byte, the confidence: 32 bytes.
 const std::vector<FieldSpec>& MvsFields() {
   static const std::vector<FieldSpec> fields = {

@@ -15,9 +15,13 @@
 
 namespace avc::messages {
 
+// The field types our point records use.
+inline constexpr int8_t kFloat = avc::point_field_t::TYPE_FLOAT32;
+inline constexpr int8_t kByte = avc::point_field_t::TYPE_UINT8;
+
 struct FieldSpec {
   std::string name;
-  int8_t datatype = avc::point_field_t::TYPE_FLOAT32;
+  int8_t datatype = kFloat;
 };
 
 // Bytes of one element of `datatype`; 0 for an unknown type.

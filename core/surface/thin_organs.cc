@@ -16,32 +16,33 @@
 namespace avc::surface {
 namespace {
 
-using Cell = std::array<int, 3>;
+using VoxelIndex = std::array<int, 3>;
 
-Cell CellOf(const Eigen::Vector3f& point, double voxel_size) {
+VoxelIndex CellOf(const Eigen::Vector3f& point, double voxel_size) {
   return {static_cast<int>(std::floor(point.x() / voxel_size)),
           static_cast<int>(std::floor(point.y() / voxel_size)),
           static_cast<int>(std::floor(point.z() / voxel_size))};
 }
 
-Cell Shifted(const Cell& cell, int dx, int dy, int dz) {
+VoxelIndex Shifted(const VoxelIndex& cell, int dx, int dy, int dz) {
   return {cell[0] + dx, cell[1] + dy, cell[2] + dz};
 }
 
-std::set<Cell> ToCells(const std::vector<Eigen::Vector3i>& voxels) {
-  std::set<Cell> cells;
+std::set<VoxelIndex> ToCells(const std::vector<Eigen::Vector3i>& voxels) {
+  std::set<VoxelIndex> cells;
   for (const Eigen::Vector3i& v : voxels) cells.insert({v.x(), v.y(), v.z()});
   return cells;
 }
 
 // Steps (6-connected) from each occupied voxel to empty space: 1 on the proxy's boundary.
-std::map<Cell, int> Depths(const std::set<Cell>& occupied) {
-  std::map<Cell, int> depth;
-  std::deque<Cell> queue;
-  const std::array<Cell, 6> steps = {Cell{1, 0, 0},  Cell{-1, 0, 0}, Cell{0, 1, 0},
-                                     Cell{0, -1, 0}, Cell{0, 0, 1},  Cell{0, 0, -1}};
-  for (const Cell& cell : occupied) {
-    for (const Cell& s : steps) {
+std::map<VoxelIndex, int> Depths(const std::set<VoxelIndex>& occupied) {
+  std::map<VoxelIndex, int> depth;
+  std::deque<VoxelIndex> queue;
+  const std::array<VoxelIndex, 6> steps = {VoxelIndex{1, 0, 0}, VoxelIndex{-1, 0, 0},
+                                           VoxelIndex{0, 1, 0}, VoxelIndex{0, -1, 0},
+                                           VoxelIndex{0, 0, 1}, VoxelIndex{0, 0, -1}};
+  for (const VoxelIndex& cell : occupied) {
+    for (const VoxelIndex& s : steps) {
       if (!occupied.contains(Shifted(cell, s[0], s[1], s[2]))) {
         depth[cell] = 1;
         queue.push_back(cell);
@@ -50,10 +51,10 @@ std::map<Cell, int> Depths(const std::set<Cell>& occupied) {
     }
   }
   while (!queue.empty()) {
-    const Cell cell = queue.front();
+    const VoxelIndex cell = queue.front();
     queue.pop_front();
-    for (const Cell& s : steps) {
-      const Cell next = Shifted(cell, s[0], s[1], s[2]);
+    for (const VoxelIndex& s : steps) {
+      const VoxelIndex next = Shifted(cell, s[0], s[1], s[2]);
       if (occupied.contains(next) && !depth.contains(next)) {
         depth[next] = depth[cell] + 1;
         queue.push_back(next);
@@ -82,11 +83,11 @@ std::vector<Eigen::Vector3i> ThinVoxels(const std::vector<Eigen::Vector3f>& occu
                                         double voxel_size, const ThinOrganOptions& options) {
   RequireValid(options);
   if (!(voxel_size > 0)) throw std::invalid_argument("ThinVoxels: voxel size must be positive");
-  std::set<Cell> occupied;
+  std::set<VoxelIndex> occupied;
   for (const Eigen::Vector3f& centre : occupied_centres)
     occupied.insert(CellOf(centre, voxel_size));
   // Everything within core_reach of a core voxel is bulky.
-  std::set<Cell> bulky;
+  std::set<VoxelIndex> bulky;
   for (const auto& [cell, depth] : Depths(occupied)) {
     if (depth < options.core_depth) continue;
     const int r = options.core_reach;
@@ -97,7 +98,7 @@ std::vector<Eigen::Vector3i> ThinVoxels(const std::vector<Eigen::Vector3f>& occu
     }
   }
   std::vector<Eigen::Vector3i> thin;
-  for (const Cell& cell : occupied) {
+  for (const VoxelIndex& cell : occupied) {
     if (!bulky.contains(cell)) thin.emplace_back(cell[0], cell[1], cell[2]);
   }
   return thin;
@@ -106,28 +107,28 @@ std::vector<Eigen::Vector3i> ThinVoxels(const std::vector<Eigen::Vector3f>& occu
 geometry::Mesh VoxelSurface(const std::vector<Eigen::Vector3i>& voxels,
                             const std::vector<Eigen::Vector3i>& occupied, double voxel_size,
                             int smoothing_iterations, double inward_voxels) {
-  const std::set<Cell> filled = ToCells(occupied);
+  const std::set<VoxelIndex> filled = ToCells(occupied);
   geometry::Mesh mesh;
-  std::map<Cell, int> corner_index;
-  const auto corner = [&](const Cell& c) {
+  std::map<VoxelIndex, int> corner_index;
+  const auto corner = [&](const VoxelIndex& c) {
     const auto [it, added] = corner_index.try_emplace(c, static_cast<int>(mesh.vertices.size()));
     if (added) {
       mesh.vertices.push_back((voxel_size * Eigen::Vector3d(c[0], c[1], c[2])).cast<float>());
     }
     return it->second;
   };
-  for (const Cell& cell : ToCells(voxels)) {
+  for (const VoxelIndex& cell : ToCells(voxels)) {
     for (int axis = 0; axis < 3; ++axis) {
       // (a, b) with a x b = +axis: the quad base, +a, +a+b, +b winds counter-clockwise seen
       // from the +axis side.
       const int a = (axis + 1) % 3, b = (axis + 2) % 3;
       for (int side : {0, 1}) {
-        Cell neighbour = cell;
+        VoxelIndex neighbour = cell;
         neighbour[axis] += side == 1 ? 1 : -1;
         if (filled.contains(neighbour)) continue;
-        Cell base = cell;
+        VoxelIndex base = cell;
         base[axis] += side;
-        Cell along_a = base, along_b = base, both = base;
+        VoxelIndex along_a = base, along_b = base, both = base;
         along_a[a] += 1;
         along_b[b] += 1;
         both[a] += 1;
@@ -159,12 +160,12 @@ size_t AddThinOrgans(geometry::Mesh& mesh, const std::vector<Eigen::Vector3f>& o
   if (thin.empty()) return 0;
   std::vector<Eigen::Vector3i> occupied;
   for (const Eigen::Vector3f& centre : occupied_centres) {
-    const Cell cell = CellOf(centre, voxel_size);
+    const VoxelIndex cell = CellOf(centre, voxel_size);
     occupied.emplace_back(cell[0], cell[1], cell[2]);
   }
   // Algorithm 3's faces in or next to the thin parts give way to their surface: its patches on
   // an organ one or two voxels wide stray up to a voxel off the proxy.
-  std::set<Cell> thin_cells;
+  std::set<VoxelIndex> thin_cells;
   for (const Eigen::Vector3i& v : thin) {
     for (int dz = -1; dz <= 1; ++dz) {
       for (int dy = -1; dy <= 1; ++dy) {

@@ -6,12 +6,12 @@ namespace avc::robot {
 
 MotionOutcome WaitForMotion(RtdeClient& client, MotionMonitor& monitor, net::Milliseconds timeout,
                             int settle_samples) {
-  using Clock = std::chrono::steady_clock;
-  const auto deadline = Clock::now() + timeout;
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
   MotionOutcome outcome;
   int reached_in_a_row = 0;
   while (true) {
-    const auto left = std::chrono::duration_cast<net::Milliseconds>(deadline - Clock::now());
+    const auto left =
+        std::chrono::duration_cast<net::Milliseconds>(deadline - std::chrono::steady_clock::now());
     if (left.count() <= 0) break;
     const auto sample = client.Receive(left);
     if (!sample) break;

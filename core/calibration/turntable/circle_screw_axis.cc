@@ -9,7 +9,7 @@
 namespace avc::calibration {
 namespace {
 
-constexpr const char* kMethod = "turntable circle/screw fit";
+constexpr const char* kCircleScrewFit = "turntable circle/screw fit";
 
 Eigen::Vector3d SkewPart(const Eigen::Matrix3d& R) {
   return 0.5 * Eigen::Vector3d(R(2, 1) - R(1, 2), R(0, 2) - R(2, 0), R(1, 0) - R(0, 1));
@@ -25,8 +25,8 @@ Eigen::Vector3d AxisFromRotations(const std::vector<TurntableView>& views) {
     }
   }
   if (sum.norm() < 1e-9)
-    throw std::invalid_argument(
-        fmt::format("{}: the board orientations do not rotate with the commanded angles", kMethod));
+    throw std::invalid_argument(fmt::format(
+        "{}: the board orientations do not rotate with the commanded angles", kCircleScrewFit));
   return sum.normalized();
 }
 
@@ -34,7 +34,7 @@ Eigen::Vector3d AxisFromRotations(const std::vector<TurntableView>& views) {
 
 TurntableAxis CircleScrewAxis(const std::vector<TurntableView>& views,
                               const CircleScrewOptions& options) {
-  ValidateTurntableViews(views, options.limits, kMethod);
+  ValidateTurntableViews(views, options.limits, kCircleScrewFit);
   TurntableAxis result;
   result.axis = AxisFromRotations(views);
   const Eigen::Vector3d& a = result.axis;
@@ -60,12 +60,12 @@ TurntableAxis CircleScrewAxis(const std::vector<TurntableView>& views,
   const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(A);
   if (qr.rank() < 3)
     throw std::invalid_argument(fmt::format(
-        "{}: the board origins are collinear in the plane normal to the axis", kMethod));
+        "{}: the board origins are collinear in the plane normal to the axis", kCircleScrewFit));
   const Eigen::Vector3d solution = qr.solve(b);
   const double radius_squared = solution.z() + solution.head<2>().squaredNorm();
   if (!solution.allFinite() || !(radius_squared > 1e-12))
     throw std::invalid_argument(fmt::format(
-        "{}: the board origin does not travel on a circle (is it on the axis?)", kMethod));
+        "{}: the board origin does not travel on a circle (is it on the axis?)", kCircleScrewFit));
   result.centre = mean + solution.x() * u + solution.y() * v + (height / n) * a;
   return result;
 }

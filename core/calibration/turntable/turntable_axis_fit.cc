@@ -11,7 +11,7 @@
 namespace avc::calibration {
 namespace {
 
-constexpr const char* kMethod = "turntable Ceres fit";
+constexpr const char* kCeresFit = "turntable Ceres fit";
 
 // Rotation matrix (column-major 3x3) for rotation vector `w`.
 template <typename T>
@@ -77,8 +77,8 @@ TurntableFit FitTurntableAxis(const std::vector<TurntableView>& views,
   if (!(options.position_sigma > 0) || !(options.orientation_sigma > 0) ||
       !(options.angle_sigma >= 0) || options.max_iterations < 1)
     throw std::invalid_argument(fmt::format(
-        "{}: noise sigmas must be positive (angle_sigma >= 0) and max_iterations >= 1", kMethod));
-  ValidateTurntableViews(views, options.limits, kMethod);
+        "{}: noise sigmas must be positive (angle_sigma >= 0) and max_iterations >= 1", kCeresFit));
+  ValidateTurntableViews(views, options.limits, kCeresFit);
   const TurntableAxis start = CircleScrewAxis(views, {options.limits});
 
   // Board pose at angle 0 from the first view turned back by its commanded angle.
@@ -116,7 +116,7 @@ TurntableFit FitTurntableAxis(const std::vector<TurntableView>& views,
   ceres::Solver::Summary summary;
   ceres::Solve(solver, &problem, &summary);
   if (!summary.IsSolutionUsable())
-    throw std::runtime_error(fmt::format("{}: solver failed: {}", kMethod, summary.message));
+    throw std::runtime_error(fmt::format("{}: solver failed: {}", kCeresFit, summary.message));
 
   TurntableFit fit;
   const Eigen::Vector3d c(line[0], line[1], line[2]);

@@ -49,9 +49,9 @@ class DeflatedProduct {
   Eigen::VectorXd weights_;
 };
 
-std::vector<EigenPair> Run(const Eigen::SparseMatrix<double>& matrix,
-                           const std::vector<EigenPair>& found, double shift, int wanted,
-                           uint64_t start_seed, const LanczosOptions& options) {
+std::vector<EigenPair> RunLanczos(const Eigen::SparseMatrix<double>& matrix,
+                                  const std::vector<EigenPair>& found, double shift, int wanted,
+                                  uint64_t start_seed, const LanczosOptions& options) {
   const Eigen::Index n = matrix.rows();
   const Eigen::Index krylov = std::min<Eigen::Index>(
       n, options.krylov_vectors > 0 ? options.krylov_vectors : std::max(2 * wanted + 1, 20));
@@ -97,14 +97,14 @@ Eigen::MatrixXd LanczosTopEigenvectors(const Eigen::SparseMatrix<double>& symmet
   const double shift = 2 * bound + 1;
   const double resolution = 1e3 * options.tolerance * std::max(bound, 1.0);
 
-  std::vector<EigenPair> found = Run(symmetric, {}, shift, count, 0, options);
+  std::vector<EigenPair> found = RunLanczos(symmetric, {}, shift, count, 0, options);
   // Each check either confirms the set or swaps in a missed larger eigenvalue (a repeated copy);
   // at most count swaps can be needed for a count-fold eigenvalue.
   for (int check = 0; check <= count; ++check) {
     auto smallest = std::min_element(
         found.begin(), found.end(), [](const auto& a, const auto& b) { return a.value < b.value; });
     EigenPair next =
-        Run(symmetric, found, shift, 1, static_cast<uint64_t>(check) + 1, options).front();
+        RunLanczos(symmetric, found, shift, 1, static_cast<uint64_t>(check) + 1, options).front();
     if (next.value <= smallest->value + resolution) {
       std::stable_sort(found.begin(), found.end(),
                        [](const auto& a, const auto& b) { return a.value > b.value; });

@@ -16,7 +16,7 @@
 namespace avc::surface::baselines {
 namespace {
 
-constexpr const char* kMethod = "advancing front baseline";
+constexpr const char* kAdvancingFront = "advancing front baseline";
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 
 // CGAL's priority functor: the default (smallest Delaunay sphere radius) for facets within the
@@ -92,13 +92,13 @@ void CanonicalOrder(geometry::Mesh& mesh) {
 
 geometry::Mesh AdvancingFront(const geometry::PointCloud& cloud,
                               const AdvancingFrontOptions& options) {
-  CheckBaselineInput(cloud, kMethod, /*require_normals=*/false);
+  CheckBaselineInput(cloud, kAdvancingFront, /*require_normals=*/false);
   if (!(options.max_perimeter_factor > 0.0) || !(options.radius_ratio_bound > 0.0) ||
       !(options.beta > 0.0)) {
-    throw std::invalid_argument(
-        fmt::format("{}: max_perimeter_factor, radius_ratio_bound and beta must be > 0", kMethod));
+    throw std::invalid_argument(fmt::format(
+        "{}: max_perimeter_factor, radius_ratio_bound and beta must be > 0", kAdvancingFront));
   }
-  const double spacing = ResolveSpacing(cloud, options.spacing, kMethod);
+  const double spacing = ResolveSpacing(cloud, options.spacing, kAdvancingFront);
   std::vector<Kernel::Point_3> points;
   points.reserve(cloud.size());
   for (const Eigen::Vector3f& p : cloud.positions) points.emplace_back(p.x(), p.y(), p.z());

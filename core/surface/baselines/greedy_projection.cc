@@ -14,7 +14,7 @@
 namespace avc::surface::baselines {
 namespace {
 
-constexpr const char* kMethod = "greedy projection baseline";
+constexpr const char* kGreedyProjection = "greedy projection baseline";
 
 double Radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 
@@ -22,12 +22,12 @@ double Radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 
 geometry::Mesh GreedyProjection(const geometry::PointCloud& cloud,
                                 const GreedyProjectionOptions& options) {
-  CheckBaselineInput(cloud, kMethod, /*require_normals=*/true);
+  CheckBaselineInput(cloud, kGreedyProjection, /*require_normals=*/true);
   if (!(options.radius_factor > 0.0) || !(options.mu > 0.0) || options.max_neighbours < 3) {
-    throw std::invalid_argument(
-        fmt::format("{}: radius_factor and mu must be > 0 and max_neighbours >= 3", kMethod));
+    throw std::invalid_argument(fmt::format(
+        "{}: radius_factor and mu must be > 0 and max_neighbours >= 3", kGreedyProjection));
   }
-  const double spacing = ResolveSpacing(cloud, options.spacing, kMethod);
+  const double spacing = ResolveSpacing(cloud, options.spacing, kGreedyProjection);
   const pcl::PointCloud<pcl::PointNormal>::Ptr points = ToPclPointNormals(cloud);
   pcl::search::KdTree<pcl::PointNormal>::Ptr tree(new pcl::search::KdTree<pcl::PointNormal>);
   tree->setInputCloud(points);

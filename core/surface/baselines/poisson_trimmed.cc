@@ -14,7 +14,7 @@
 namespace avc::surface::baselines {
 namespace {
 
-constexpr const char* kMethod = "Poisson baseline";
+constexpr const char* kPoisson = "Poisson baseline";
 
 int AutomaticDepth(const geometry::PointCloud& cloud, double spacing) {
   Eigen::Vector3f low = cloud.positions.front();
@@ -31,13 +31,13 @@ int AutomaticDepth(const geometry::PointCloud& cloud, double spacing) {
 }  // namespace
 
 geometry::Mesh PoissonTrimmed(const geometry::PointCloud& cloud, const PoissonOptions& options) {
-  CheckBaselineInput(cloud, kMethod, /*require_normals=*/true);
+  CheckBaselineInput(cloud, kPoisson, /*require_normals=*/true);
   if (!(options.trim_factor > 0.0) || options.depth > 12) {
     throw std::invalid_argument(
-        fmt::format("{}: trim_factor must be > 0 and depth <= 12 (got {}, {})", kMethod,
+        fmt::format("{}: trim_factor must be > 0 and depth <= 12 (got {}, {})", kPoisson,
                     options.trim_factor, options.depth));
   }
-  const double spacing = ResolveSpacing(cloud, options.spacing, kMethod);
+  const double spacing = ResolveSpacing(cloud, options.spacing, kPoisson);
   pcl::Poisson<pcl::PointNormal> poisson;
   poisson.setInputCloud(ToPclPointNormals(cloud));
   poisson.setDepth(options.depth > 0 ? options.depth : AutomaticDepth(cloud, spacing));

@@ -15,7 +15,7 @@
 namespace avc::surface::baselines {
 namespace {
 
-constexpr const char* kMethod = "Pound patches baseline";
+constexpr const char* kPoundPatches = "Pound patches baseline";
 
 // A planar section: every vertex moved onto the patch's regression plane.
 void Flatten(Cell& cell) {
@@ -43,14 +43,14 @@ std::vector<int32_t> FixedRadiusPatches(const std::vector<Eigen::Vector3f>& poin
 }
 
 geometry::Mesh PoundPatches(const geometry::PointCloud& cloud, const PoundOptions& options) {
-  CheckBaselineInput(cloud, kMethod, /*require_normals=*/false);
+  CheckBaselineInput(cloud, kPoundPatches, /*require_normals=*/false);
   if (!(options.patch_radius_factor > 0.0) || !(options.alpha_factor > 0.0) ||
       !(options.growth_clearance_factor >= 0.0)) {
     throw std::invalid_argument(fmt::format(
         "{}: patch_radius_factor and alpha_factor must be > 0, growth_clearance_factor >= 0",
-        kMethod));
+        kPoundPatches));
   }
-  const double spacing = ResolveSpacing(cloud, options.spacing, kMethod);
+  const double spacing = ResolveSpacing(cloud, options.spacing, kPoundPatches);
   ClusteredPoints input;
   input.cloud = cloud;
   input.clusters = FixedRadiusPatches(cloud.positions, options.patch_radius_factor * spacing);
