@@ -6,8 +6,11 @@
 #include <utility>
 
 namespace avc::robot {
+namespace {
 
 using Clock = std::chrono::steady_clock;
+
+}  // namespace
 
 ScriptClient::ScriptClient(const std::string& host, uint16_t port, net::Milliseconds timeout)
     : stream_(net::TcpStream::Connect(host, port, timeout)), timeout_(timeout) {}
