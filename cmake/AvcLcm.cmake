@@ -1,5 +1,5 @@
 # LCM 1.3.1 as Debian ships it: no CMake package, and a pkg-config file that needs glib headers
-# which are not installed (docs/lcm.md D1, D2). Find the pieces directly and make lcm::lcm.
+# which are not installed. Find the pieces directly and make lcm::lcm.
 find_program(AVC_LCM_GEN lcm-gen)
 find_path(AVC_LCM_INCLUDE_DIR lcm/lcm-cpp.hpp)
 find_library(AVC_LCM_LIBRARY lcm)

@@ -1,7 +1,7 @@
 #pragma once
 
 // The information-gain planner the active vision is compared with (Isler et al., ICRA 2016, the
-// "unobserved voxel" gain; docs/algorithms.md §6.2). Candidate views lie on a sphere around the
+// "unobserved voxel" gain). Candidate views lie on a sphere around the
 // plant (elevation rings x azimuths, realised in the cell as the planner's own are). Each step
 // scores every reachable candidate by casting rays through a grid of its pixels into the plant
 // proxy and counting the unknown voxels they cross before an occupied one; the best is captured

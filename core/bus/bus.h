@@ -1,14 +1,14 @@
 #pragma once
 
 // The one way AVC processes talk: typed publish/subscribe over LCM with the project's rules
-// built in (docs/lcm.md section 10):
-//  - owns its lcm::LCM instances and cannot be copied (D12);
+// built in:
+//  - owns its lcm::LCM instances and cannot be copied;
 //  - every channel is prefixed "<cell>/" so cells sharing a network never hear each other;
-//  - publishing is serialised by a mutex (D14) and refused above the message cap (D7);
-//  - subscribe takes a std::function (D11) with an explicit queue capacity (D16);
+//  - publishing is serialised by a mutex and refused above the message cap;
+//  - subscribe takes a std::function with an explicit queue capacity;
 //  - bad input is decoded by us, so it is counted and logged instead of printed by LCM, and a
 //    throwing handler is logged and counted and never unwinds through LCM's C frames;
-//  - handle() runs only on the EventLoop thread it is attached to (D13).
+//  - handle() runs only on the EventLoop thread it is attached to (LCM is not thread-safe).
 
 #include <atomic>
 #include <cstdint>

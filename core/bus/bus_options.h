@@ -10,7 +10,8 @@
 namespace avc::bus {
 
 inline constexpr char kDefaultControlUrl[] = "udpm://239.255.76.67:7667?ttl=0";
-// Receivers of multi-MB products need a large socket buffer (docs/lcm.md section 4).
+// Receivers of multi-MB products need a large socket buffer (the kernel caps it at
+// net.core.rmem_max).
 inline constexpr char kDefaultBulkUrl[] = "udpm://239.255.76.67:7668?ttl=0&recv_buf_size=4194304";
 inline constexpr char kDefaultCell[] = "cell0";
 // LCM silently drops messages over 256 MiB and multi-MB datagrams are fragile; products are

@@ -3,7 +3,7 @@
 // A single-threaded event loop: file descriptors, timers, work posted from other threads, and
 // POSIX signals delivered through a self-pipe. Everything registered runs on the thread that
 // calls Run(), so node state needs no locks and LCM's one-thread handle() rule holds by
-// construction (docs/lcm.md D13).
+// construction.
 
 #include <chrono>
 #include <cstdint>

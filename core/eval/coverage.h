@@ -1,6 +1,6 @@
 #pragma once
 
-// Coverage of a ground-truth surface by a set of views (docs/algorithms.md §6.3): a surface
+// Coverage of a ground-truth surface by a set of views: a surface
 // sample is covered when at least min_views cameras see it, i.e. it projects inside the image,
 // nothing lies between it and the camera centre, and the view is no more grazing than
 // max_grazing_deg (angle between the surface normal, either side — leaves are two-sided — and

@@ -2,7 +2,7 @@
 
 // Accuracy, completeness, precision / recall / F-score and area ratio of a reconstruction (a
 // point cloud or a mesh) against a ground-truth mesh, overall and per organ: the figures of the
-// paper's Tables 1 and 4 and of the Tanks & Temples style benchmarks (docs/algorithms.md §5).
+// paper's Tables 1 and 4 and of the Tanks & Temples style benchmarks.
 //
 // Conventions: metres. The ground truth is treated as one-sided: every triangle counts once,
 // so an open leaf sheet has its leaf area, while a closed thin solid (the synthetic maize)

@@ -1,7 +1,7 @@
 #pragma once
 
-// Runs the processes of a launch file on an EventLoop (procman semantics, docs/lcm.md section
-// 10): starts them with output in <log_dir>/<name>.log, reaps them on SIGCHLD, restarts them per
+// Runs the processes of a launch file on an EventLoop (procman semantics):
+// starts them with output in <log_dir>/<name>.log, reaps them on SIGCHLD, restarts them per
 // policy with a growing backoff, publishes process_status_t on PROCESS_STATUS at 1 Hz and on
 // every change plus its own "avc-up" heartbeat, and on SIGTERM/SIGINT stops them all (SIGTERM,
 // then SIGKILL after stop_timeout).

@@ -1,6 +1,6 @@
 #pragma once
 
-// Records bus traffic into an LCM log (docs/lcm.md section 10, "Recording"): a run_info_t first,
+// Records bus traffic into an LCM log : a run_info_t first,
 // then every message of the cell (or of every cell) from the control and bulk links, stamped
 // with its receive time, flushed to disk periodically and on Stop() so a crash or a signal
 // loses at most one flush interval (lcm-logger loses its buffer on exit, D6).

@@ -1,6 +1,6 @@
 #pragma once
 
-// Deterministic single-process replay (docs/lcm.md section 10, "Replay determinism"): reads a
+// Deterministic single-process replay: reads a
 // log in order on one thread and feeds each event to the selected nodes over an in-process bus
 // whose clock is the event's log time. No sockets, no wall clock, so replaying the same log
 // twice gives the same outputs byte for byte.

@@ -4,7 +4,7 @@
 // line 17: "the angle at which each image sees the cluster, and the percentage that has been
 // seen"). A face of a patch is seen by a view when it projects inside the image, the view is no
 // more grazing than max_grazing_deg on either side (leaves are two-sided, as in the coverage
-// metric of docs/algorithms.md §6.3), and the ray from the camera reaches it: OctoMap ray casting
+// metric of core/eval/coverage.h), and the ray from the camera reaches it: OctoMap ray casting
 // through the proxy finds no occupied voxel before the face's own. A view sees a patch when it
 // sees at least min_seen_fraction of its faces; a patch scores the number of views that see it
 // over min_views, and passes at 1.

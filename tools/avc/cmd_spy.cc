@@ -1,5 +1,5 @@
 // avc spy: lcm-spy with our message types on its class path and the Java 17 workaround, so it
-// decodes every AVC channel (docs/lcm.md D3, D4, section 7).
+// decodes every AVC channel.
 
 #include <unistd.h>
 

@@ -1,7 +1,7 @@
 #pragma once
 
-// Plane-sweep ZNCC multi-view stereo, the comparator for the patch MVS (docs/algorithms.md
-// §1.3): for every reference view, fronto-parallel planes are swept through the plant proxy's
+// Plane-sweep ZNCC multi-view stereo, the comparator for the patch MVS: for
+// every reference view, fronto-parallel planes are swept through the plant proxy's
 // per-pixel depth interval, the best-k neighbours' windowed ZNCC picks the depth per pixel
 // (winner-take-all, parabola refinement), and the depth maps are filtered by geometric
 // consistency and fused into oriented, coloured points.

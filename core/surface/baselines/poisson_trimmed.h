@@ -2,7 +2,7 @@
 
 // Baseline: screened Poisson reconstruction (Kazhdan & Hoppe 2013, pcl::Poisson) trimmed to the
 // data. Poisson always closes the surface, so an open leaf comes back as a blob wrapped round
-// both sides (docs/algorithms.md §4.4: RMSE ~25 mm, area ~4x); faces whose centroid is farther
+// both sides (RMSE ~25 mm, area ~4x on our plants); faces whose centroid is farther
 // than trim_factor spacings from every input point are dropped.
 
 #include "core/geometry/mesh.h"

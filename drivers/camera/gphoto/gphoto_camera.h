@@ -2,7 +2,7 @@
 
 // CameraBackend over libgphoto2: a real camera on USB (Canon EOS 650D) or any camera libgphoto2
 // can open, including the PTP/IP emulator (model "PTP/IP Camera", port "ptpip:127.0.0.1:PORT").
-// docs/hardware.md section 3 lists the calls and pitfalls this follows.
+// The pitfalls this works around are listed below.
 //
 // Not thread-safe: one owner thread per camera, as the USB device has one owner.
 // Process-wide side effects, both to survive libgphoto2 2.5.30's PTP/IP code:

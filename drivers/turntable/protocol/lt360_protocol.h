@@ -2,7 +2,7 @@
 
 // The LT360 RS-232 grammar: CR- (or NUL-) terminated ASCII commands, case-insensitive, replies
 // such as "+123.4" (tenths of a degree) and "CW"/"CCW"/"NO". The exact command strings of the EX
-// model are not documented (docs/hardware.md 2.1/2.2), so every string lives in a CommandTable
+// model are not documented publicly, so every string lives in a CommandTable
 // that can be loaded from JSON once transcribed from the manual or a real transcript
 // (drivers/turntable/protocol/lt360_command_table.json holds the defaults; pass an edited copy with
 // `avc turntable --command-table`). The driver formats commands and parses replies here; the

@@ -1,7 +1,7 @@
 #pragma once
 
 // An LT360 turntable behind a pseudo-terminal: the driver opens device_path() exactly like
-// /dev/ttyUSB0, so the real serial backend is what runs against it (docs/hardware.md 2.5).
+// /dev/ttyUSB0, so the real serial backend is what runs against it.
 // It speaks the grammar of a CommandTable (case-insensitive, CR or NUL terminated, waits
 // silently for a terminator), moves at a set speed, reports the angle quantised to 0.1 deg
 // while the true angle carries a seeded error model, and injects faults on request.

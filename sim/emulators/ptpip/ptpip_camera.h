@@ -2,7 +2,7 @@
 
 // A PTP/IP camera on 127.0.0.1 that stock libgphoto2 (ptp2 camlib, model "PTP/IP Camera",
 // port "ptpip:127.0.0.1:PORT") opens, configures, captures from, downloads from and deletes on
-// (docs/hardware.md 3.4). One thread serves the listener, the command/data connection and the
+// One thread serves the listener, the command/data connection and the
 // event connection with poll(). Generic PTP only: no vendor extension, no live view.
 //
 // A capture runs like a camera's: InitiateCapture is answered at once, the frame source renders
