@@ -9,6 +9,7 @@
 #include "core/bus/decode.h"
 #include "core/messages/camera_message.h"
 #include "core/messages/clusters_message.h"
+#include "core/messages/mesh_message.h"
 #include "core/messages/mvs_points_message.h"
 #include "core/messages/point_records.h"
 #include "core/ppr/octree_voxels.h"
@@ -16,7 +17,6 @@
 #include "core/products/point_cloud_ply.h"
 #include "core/products/product_archive.h"
 #include "services/builder/node_inputs.h"
-#include "services/surfacer/mesh_message.h"
 
 #include "fuzz/fuzz_support.h"
 #include "fuzz/lcm_types.inc"
@@ -52,7 +52,7 @@ void Interpret(const avc::image_t& message, const uint8_t* data, size_t size) { 
 }
 void Interpret(const avc::mesh_t& message, const uint8_t* data, size_t size) {
   Archive<avc::mesh_t>(data, size);
-  surfacer::MeshFromMessage(message);
+  messages::MeshFromMessage(message);
 }
 void Interpret(const avc::point_cloud_t& message, const uint8_t* data, size_t size) {
   Archive<avc::point_cloud_t>(data, size);

@@ -24,6 +24,7 @@
 #include "core/kinematics/row_major_pose.h"
 #include "core/messages/camera_message.h"
 #include "core/messages/clusters_message.h"
+#include "core/messages/mesh_message.h"
 #include "core/messages/mvs_points_message.h"
 #include "core/messages/point_records.h"
 #include "core/plan/plan_exchange.h"
@@ -32,7 +33,6 @@
 #include "core/util/file_io.h"
 #include "core/util/sha256.h"
 #include "orchestrator/scan_record.h"
-#include "services/surfacer/mesh_message.h"
 
 #include "fuzz/fuzz_support.h"
 #include "fuzz/lcm_types.inc"
@@ -167,7 +167,7 @@ void MessageSeeds() {
   clusters.clusters = {0, 1, -1};
   Seed("lcm_messages", "clusters_t", Encode(messages::ClustersToMessage(clusters)));
 
-  Seed("lcm_messages", "mesh_t", Encode(surfacer::MeshToMessage(TestMesh(), "scan-mesh")));
+  Seed("lcm_messages", "mesh_t", Encode(messages::MeshToMessage(TestMesh(), "scan-mesh")));
 
   avc::point_cloud_t cloud = messages::MakePointCloud(
       "cloud", {{"x"}, {"y"}, {"z"}, {"red", avc::point_field_t::TYPE_UINT8}}, 2);

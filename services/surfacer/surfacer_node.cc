@@ -6,10 +6,10 @@
 #include <stdexcept>
 
 #include "core/bus/channels.h"
+#include "core/messages/mesh_message.h"
 #include "core/surface/surface_images_io.h"
 #include "core/util/log.h"
 #include "core/util/validation.h"
-#include "services/surfacer/mesh_message.h"
 
 namespace avc::surfacer {
 
@@ -86,12 +86,12 @@ void SurfacerNode::Publish(const SurfacerResult& result) {
   }
   avc::mesh_t message;
   try {
-    message = MeshToMessage(result.mesh, result.cloud_id);
+    message = messages::MeshToMessage(result.mesh, result.cloud_id);
   } catch (const std::exception& error) {
     // Our own mesh failing its check is a bug; answer with an empty mesh rather than not at all.
     log::Warn("mesh of '{}' cannot be encoded ({}); an empty one is sent", result.cloud_id,
               error.what());
-    message = MeshToMessage(geometry::Mesh{}, result.cloud_id);
+    message = messages::MeshToMessage(geometry::Mesh{}, result.cloud_id);
   }
   sender_.SendMessage(channels::kProductMesh, "mesh/" + result.cloud_id, message,
                       [cloud_id = result.cloud_id](const products::SendResult& sent) {

@@ -11,7 +11,6 @@
 #include <set>
 
 #include "core/geometry/mesh_io.h"
-#include "services/surfacer/mesh_message.h"
 #include "services/surfacer/plant_base.h"
 #include "tests/support/test_support.h"
 #include "tests/surfacer/two_leaf_clusters.h"
@@ -92,33 +91,6 @@ TEST(SurfaceClusters, WritesTheMeshAndTraitFiles) {
   const std::string csv = ::avc::testing::ReadFile(dir / "out" / "traits.csv");
   EXPECT_NE(csv.find("total_area"), std::string::npos) << csv;
   EXPECT_TRUE(std::filesystem::exists(dir / "out" / "traits.json"));
-}
-
-TEST(MeshMessage, RoundTripsExactlyWithTheSameBytes) {
-  const geometry::Mesh mesh = SurfaceClusters(testing::TwoLeafClusters("m")).mesh;
-  const avc::mesh_t a = MeshToMessage(mesh, "m");
-  const avc::mesh_t b = MeshToMessage(mesh, "m");
-  EXPECT_EQ(a.data, b.data);
-  EXPECT_EQ(a.num_faces, static_cast<int32_t>(mesh.faces.size()));
-  const geometry::Mesh back = MeshFromMessage(a);
-  EXPECT_EQ(back.vertices, mesh.vertices);
-  EXPECT_EQ(back.faces, mesh.faces);
-  EXPECT_EQ(back.face_labels, mesh.face_labels);
-  EXPECT_EQ(back.colors, mesh.colors);
-  EXPECT_EQ(MeshFromMessage(MeshToMessage(geometry::Mesh{}, "empty")).vertices.size(), 0u);
-
-  avc::mesh_t lying = a;
-  lying.num_faces += 1;
-  EXPECT_THROW(MeshFromMessage(lying), std::invalid_argument);
-  avc::mesh_t cut = a;
-  cut.data.resize(cut.data.size() / 2);
-  cut.data_size = static_cast<int32_t>(cut.data.size());
-  try {
-    MeshFromMessage(cut);
-    ADD_FAILURE() << "a truncated PLY was accepted";
-  } catch (const std::invalid_argument& error) {
-    EXPECT_NE(std::string(error.what()).find("mesh 'm'"), std::string::npos) << error.what();
-  }
 }
 
 }  // namespace

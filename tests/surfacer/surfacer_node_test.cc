@@ -15,8 +15,8 @@
 
 #include "core/bus/channels.h"
 #include "core/messages/clusters_message.h"
+#include "core/messages/mesh_message.h"
 #include "core/surface/surface_images_io.h"
-#include "services/surfacer/mesh_message.h"
 #include "tests/support/test_support.h"
 #include "tests/surface/disc_views.h"
 #include "tests/surfacer/two_leaf_clusters.h"
@@ -73,8 +73,8 @@ TEST(SurfacerNode, AnswersEachClustersProductWithTheOfflineMesh) {
   EXPECT_EQ(answer.frame, "world");
   const SurfacerResult offline = SurfaceClusters(clusters);
   ASSERT_EQ(offline.problem, "");
-  EXPECT_EQ(answer.data, MeshToMessage(offline.mesh, "plant-mvs-1").data);
-  const geometry::Mesh mesh = MeshFromMessage(answer);
+  EXPECT_EQ(answer.data, messages::MeshToMessage(offline.mesh, "plant-mvs-1").data);
+  const geometry::Mesh mesh = messages::MeshFromMessage(answer);
   EXPECT_EQ(mesh.face_labels, offline.mesh.face_labels);
   EXPECT_EQ(mesh.colors.size(), mesh.vertices.size());
   EXPECT_TRUE(std::filesystem::exists(dir / "plant-mvs-1/mesh.ply"));
@@ -97,7 +97,7 @@ TEST(SurfacerNode, GrowsOverTheMasksOfItsReconstructionFolder) {
   ASSERT_EQ(images.views.size(), 16u);
   const SurfacerResult offline = SurfaceClusters(clusters, {}, &images);
   ASSERT_EQ(offline.problem, "");
-  EXPECT_EQ(h.answers[0].data, MeshToMessage(offline.mesh, "masks-1").data);
+  EXPECT_EQ(h.answers[0].data, messages::MeshToMessage(offline.mesh, "masks-1").data);
   // The upper leaf gained the 7 pi cm^2 ring between 3 and 4 cm.
   const double ring = std::numbers::pi * (0.04 * 0.04 - 0.03 * 0.03);
   const double without = geometry::SurfaceArea(SurfaceClusters(clusters).mesh);

@@ -16,9 +16,9 @@
 #include "core/bus/event_loop.h"
 #include "core/launch/child_process.h"
 #include "core/messages/clusters_message.h"
+#include "core/messages/mesh_message.h"
 #include "core/products/product_receiver.h"
 #include "core/products/product_sender.h"
-#include "services/surfacer/mesh_message.h"
 #include "services/surfacer/surface_clusters.h"
 #include "tests/support/test_support.h"
 #include "tests/surfacer/two_leaf_clusters.h"
@@ -68,7 +68,7 @@ TEST(SurfacerProcess, AnswersOverTheBusLikeTheOfflineRunAndStopsOnSigterm) {
       << ::avc::testing::ReadFile(log);
   EXPECT_EQ(answer->mesh_id, "plant-mvs-1");
   const SurfacerResult offline = SurfaceClusters(clusters);
-  EXPECT_EQ(answer->data, MeshToMessage(offline.mesh, "plant-mvs-1").data);
+  EXPECT_EQ(answer->data, messages::MeshToMessage(offline.mesh, "plant-mvs-1").data);
   EXPECT_TRUE(std::filesystem::exists(dir / "plant-mvs-1/mesh.ply"));
   EXPECT_TRUE(std::filesystem::exists(dir / "plant-mvs-1/traits.csv"));
 

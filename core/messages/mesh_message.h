@@ -8,7 +8,7 @@
 
 #include "core/geometry/mesh.h"
 
-namespace avc::surfacer {
+namespace avc::messages {
 
 // Frame "world". Same mesh, same bytes. Throws std::invalid_argument naming the mesh when it is
 // inconsistent (Mesh::Validate).
@@ -18,4 +18,4 @@ avc::mesh_t MeshToMessage(const geometry::Mesh& mesh, const std::string& mesh_id
 // header announces (encoding, vertex and face counts).
 geometry::Mesh MeshFromMessage(const avc::mesh_t& message);
 
-}  // namespace avc::surfacer
+}  // namespace avc::messages

@@ -1,4 +1,4 @@
-#include "services/surfacer/mesh_message.h"
+#include "core/messages/mesh_message.h"
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -11,7 +11,7 @@
 
 #include "core/geometry/mesh_io.h"
 
-namespace avc::surfacer {
+namespace avc::messages {
 namespace {
 
 // core/geometry reads and writes PLY through files only, so the bytes go through a private
@@ -86,4 +86,4 @@ geometry::Mesh MeshFromMessage(const avc::mesh_t& message) {
   return mesh;
 }
 
-}  // namespace avc::surfacer
+}  // namespace avc::messages
