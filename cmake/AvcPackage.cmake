@@ -19,14 +19,16 @@ set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME avc)
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
 set(CPACK_PACKAGE_VENDOR "AVC developers")
-set(CPACK_PACKAGE_CONTACT "AVC developers <avc@localhost>")
+# The Maintainer field: who builds the package (a lab sets its own with -DCPACK_PACKAGE_CONTACT).
+if(NOT CPACK_PACKAGE_CONTACT)
+  set(CPACK_PACKAGE_CONTACT "AVC developers")
+endif()
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY
     "Automated plant reconstruction cell: UR5, turntable and camera to a 3-D plant model")
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_STRIP_FILES ON)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
-set(CPACK_DEBIAN_PACKAGE_HOMEPAGE "https://example.invalid/avc")
 # The shared libraries the binary links (OpenCV, PCL, Ceres, TBB, LCM, libgphoto2, ...) become
 # Depends through dpkg-shlibdeps; the tools avc starts by name are declared by hand.
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
