@@ -8,10 +8,10 @@
 #   source directory; its row is the most specific one matching it (`drivers/*/protocol` before
 #   `drivers`). A folder in no row is an error too, so a new folder gets its rules written down.
 #
-# avc_check_layers([FOLDERS <folder>...] [TARGETS <target>...] FORBIDDEN <regex>)
-#   For rules about particular targets: fails configuration when a target defined under one of
-#   the folders, or one of the targets named, links, directly or through other targets, a target
-#   whose name matches the regex. The message names the target, the forbidden one and the chain.
+# avc_check_layers(TARGETS <target>... FORBIDDEN <regex>)
+#   For rules about particular targets the table cannot state: fails configuration when one of
+#   the targets named links, directly or through other targets, a target whose name matches the
+#   regex. The message names the target, the forbidden one and the chain.
 
 function(_avc_layer_targets dir out)
   get_property(targets DIRECTORY ${dir} PROPERTY BUILDSYSTEM_TARGETS)
@@ -53,15 +53,8 @@ function(_avc_layer_links target out)
 endfunction()
 
 function(avc_check_layers)
-  cmake_parse_arguments(ARG "" "FORBIDDEN" "FOLDERS;TARGETS" ${ARGN})
-  set(checked ${ARG_TARGETS})
-  foreach(folder IN LISTS ARG_FOLDERS)
-    if(EXISTS ${PROJECT_SOURCE_DIR}/${folder})
-      _avc_layer_targets(${PROJECT_SOURCE_DIR}/${folder} targets)
-      list(APPEND checked ${targets})
-    endif()
-  endforeach()
-  foreach(target IN LISTS checked)
+  cmake_parse_arguments(ARG "" "FORBIDDEN" "TARGETS" ${ARGN})
+  foreach(target IN LISTS ARG_TARGETS)
     # Breadth-first over the link closure, remembering how each target was reached.
     set(queue ${target})
     set(seen ${target})
