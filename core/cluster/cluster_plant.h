@@ -78,11 +78,12 @@ struct ClusterOptions {
   int reassignment_rounds = 3;
   // Separation at a narrow neck (neck_split.h): k of the neighbour graph, Lanczos steps, the
   // normal-bend weighting (0 = unweighted) and the largest neck ratio (contact length / narrower
-  // side's width) that is cut (0: only parts without any edge between them). Measured on the
-  // Table 2 sets, seeds 1-5: the results are the same for 0.45-0.55; 0.7 cuts whole leaves, 0.3
-  // leaves touching bushy blades merged. The length estimate reads about 0.47 of the true length
-  // on a straight cut across a uniform strip, so a strip six times longer than wide sits at the
-  // limit and is cut across; elliptic blades three times longer than wide are not.
+  // side's width) that is cut (0: only parts without any edge between them). A higher ratio
+  // parts touching leaves more readily but starts cutting whole leaves across; the default lies
+  // mid-way in the range where the Table 2 sets' results do not change (BENCHMARKS.md, "Where
+  // the defaults come from"). The length estimate reads about 0.47 of the true length on a
+  // straight cut across a uniform strip, so a strip six times longer than wide sits at the limit
+  // and is cut across; elliptic blades three times longer than wide are not.
   int neck_neighbours = 10;
   int neck_lanczos_steps = 40;
   double neck_bend_factor = 16.0;
@@ -90,12 +91,10 @@ struct ClusterOptions {
   // A kept neck cut is redrawn on the graph weighted by the edges' elevation off the tangent
   // planes too (neck_split.h; 0 disables it), and adopted when at most neck_max_boundary_shift of
   // the smaller side changes side; then refinement_rounds of point-wise refinement. Without it,
-  // strips of a wavy margin or a narrow tip stayed with the touching leaf (seed 1 D 10 points,
-  // seed 2 F 8, seed 3 F 16). Measured on the Table 2 sets, seeds 1-5: the kept neck cuts are
-  // redrawn by 0-13 points (at most 8 % of the smaller side; one redrawing is another cut, 549
-  // points against a smaller side of 280, and is rejected); elevation factors 1-4 give the same
-  // scores, 6 and 8 leave 7 and 15 strip points in seed 2 F and seed 3 F; shifts 0.2-1 the same
-  // as 0.1, 0.05 rejects a needed redrawing.
+  // strips of a wavy margin or a narrow tip stay with the touching leaf. A higher elevation
+  // factor leaves such strips behind again; the shift limit rejects a redrawing that is really
+  // another cut, and set too low it rejects needed ones (BENCHMARKS.md, "Where the defaults
+  // come from").
   double neck_elevation_factor = 4.0;
   double neck_max_boundary_shift = 0.1;
   // Separation of overlapping sheets (sheet_split.h; the neck's k): blades that cross. Normals
@@ -105,11 +104,11 @@ struct ClusterOptions {
   // crossing 3 times the typical angle (b 9 times). Edges weigh exp(-b / (sheet_bend_factor *
   // median b)) on the smoothed normals (the median edge 0.72; a 17-degree crossing, the smallest
   // on the Table 2 sets, the 1e-3 floor). The weights make the spectrum nearly degenerate, so the
-  // Fiedler vector needs more Lanczos steps than the neck's (with 40, seed 4 E keeps two crossing
-  // blades merged, 89.4 %; 60 and 80 give the same scores on all Table 2 sets). The cut is kept
-  // when neither side ends at it: edge bias (SheetRule) <= max_sheet_edge_bias. A cut across one
-  // sheet shows 0.2-0.7 (2/pi right at a straight edge), crossing blades 0.03-0.09 (sampling noise;
-  // Table 2 sets, seeds 1-5, every cluster that reached the test); 0 disables the split.
+  // Fiedler vector needs more Lanczos steps than the neck's: fewer leave crossing blades merged,
+  // more only cost time. The cut is kept when neither side ends at it: edge bias (SheetRule) <=
+  // max_sheet_edge_bias. A cut across one sheet shows a large bias (2/pi right at a straight
+  // edge), crossing blades only sampling noise; the default lies between the two (BENCHMARKS.md,
+  // "Where the defaults come from"); 0 disables the split.
   int sheet_lanczos_steps = 60;
   double sheet_smoothing_factor = 4.0;
   double sheet_bend_factor = 3.0;

@@ -3,9 +3,9 @@
 // Whether a cluster is a tube about its longest principal axis: a stem or petiole, whose
 // normals point away from that axis. The normal constraint (paper §3.2 Step 1) is made for
 // leaves: a tube's normals do gain from a split, but only by sorting its points into opposite
-// lengthwise strips (measured: seed 15's set D, a 16 mm wide stem with 116 points, fell into four
-// strips). A leaf arched or curled along its length also has normals along its offsets from the
-// axis, but on fewer sides of it and at distances that vary: it is still split.
+// lengthwise strips (a 16 mm wide stem of 116 points fell into four). A leaf arched or curled
+// along its length also has normals along its offsets from the axis, but on fewer sides of it
+// and at distances that vary: it is still split.
 
 #include <Eigen/Core>
 #include <cstdint>
@@ -15,9 +15,10 @@
 
 namespace avc::cluster {
 
-// What makes a tube. Measured (Table 2 sets, seeds 1-15, and the surface bench's leaves): the
-// stems' median alignment is 0.98-0.99 with radius spreads of 0.16-0.22; leaves that an arch or
-// a curl gives aligned normals reach 0.70-0.86 with spreads of 0.40-0.78.
+// What makes a tube. Looser limits (lower alignment, higher spread) take more arched or curled
+// leaves for tubes, which then escape the normal split; stricter ones let stems be split into
+// strips. The defaults lie between the stems' and the curled leaves' measured values
+// (BENCHMARKS.md, "Where the defaults come from").
 struct TubeRule {
   double min_alignment = 0.9;      // median |n . r| (25 degrees)
   double max_radius_spread = 0.3;  // RMS spread of the distances to the axis over their mean

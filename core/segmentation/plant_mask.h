@@ -45,11 +45,11 @@ struct MaskOptions {
   // kAuto: ExG is a candidate only when the class it calls plant is green, i.e. its mean ExG is
   // at least this (grey is 0, foliage 0.15..0.5); else ExG merely splits noise (white on black).
   double green_min_exg = 0.1;
-  // kAuto: ExG wins when eta_exg * green_preference >= eta_background. Above 1 because ExG
-  // alone leaves the pot and soil out, which the background distance (rightly, for its
-  // purpose) separates too and so scores higher on; 1 = pure "best separability".
-  // Measured eta_background / eta_exg: simulated potted plants 1.01..1.14; where ExG is
-  // eligible on real plants it also wins outright (plant_matting 0.90).
+  // kAuto: ExG wins when eta_exg * green_preference >= eta_background; 1 = pure "best
+  // separability". Above 1 because ExG alone leaves the pot and soil out, which the background
+  // distance separates too and so scores a little higher on; higher still, ExG would also win
+  // where it splits the plant clearly worse. The default clears the ratios measured on potted
+  // plants (BENCHMARKS.md, "Where the defaults come from").
   double green_preference = 1.25;
   // Cleanup: radius (px) of the closing disc; negative = derived from the image,
   // max(1, round(min(width, height) / 400)); 0 = no closing.

@@ -26,9 +26,9 @@ namespace avc::surface {
 // outermost points lie deeper inside (measured on discs: the band above is exact on an even
 // sampling and about half the missing one on a random sampling). With scale <= 0 the band is
 // multiplied by 1 + kRandomSamplingExtraBand * clamp((1 - r) / 0.53, 0, 1), else by scale.
-// The extra is 0.6, not the discs' 1.0: on the simulated plants' leaves (narrow tips, wavy and
-// concave margins, where an outward band overshoots) 1.0 gave area ratios of 1.03-1.07 and
-// 0.6 gives 0.98-1.005 with one cluster per leaf (`avc bench surface`, 2026-12-02).
+// The extra is 0.6, not the discs' 1.0: on leaves' narrow tips and wavy, concave margins an
+// outward band overshoots, and 1.0 overstates the simulated plants' leaf areas (BENCHMARKS.md,
+// "Where the defaults come from").
 inline constexpr double kRandomSamplingExtraBand = 0.6;
 double EstimateBoundaryBand(const std::vector<Cell>& cells, double spacing, double scale);
 

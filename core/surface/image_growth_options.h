@@ -13,10 +13,9 @@ struct ImageGrowthOptions {
   bool enabled = true;
   // Farthest a cell's outline may move, in spacings: enough to close the gaps multi-view
   // stereo leaves on a leaf (a missed strip of a blade, a margin seen edge-on), not so far that
-  // the continuation of the fitted surface is a guess. On the simulated scans (`avc bench
-  // surface --scans`) 8 / 12 / 16 give F@2mm 0.921 / 0.934 / 0.934 on the broadleaf, 0.711 /
-  // 0.748 / 0.769 on the strap, precision 98.1 / 97.2 / 96.2 % on the broadleaf: 12, where the
-  // broadleaf's gain ends.
+  // the continuation of the fitted surface is a guess. Higher recovers more of narrow leaves for
+  // some precision; 12 is where a broad leaf stops gaining (BENCHMARKS.md, "Where the defaults
+  // come from").
   double max_growth_factor = 12.0;
   // Grid pitch on the cell's plane, in spacings: the grown outline is placed to this.
   double grid_factor = 0.5;
@@ -30,11 +29,9 @@ struct ImageGrowthOptions {
   double edge_tolerance_px = 1.5;
   // The level set's curvature term: the grown region is smoothed by a Gaussian of this many
   // spacings and thresholded at one half (one Merriman-Bence-Osher step of curvature flow),
-  // which removes spurs along mask noise without moving a straight outline. Half a spacing
-  // keeps more of the narrow tips and blades: on the simulated scans (`avc bench surface
-  // --scans`) 1 / 0.5 / 0.25 give F@2mm 0.6130 / 0.6143 / 0.6149 on the rosette, 0.9498 /
-  // 0.9509 / 0.9504 on the broadleaf, 0.8844 / 0.8890 / 0.8889 on the strap (precision 95.3 /
-  // 95.3 / 94.9 %), the bushy plant 0.9827 / 0.9828 / 0.9828.
+  // which removes spurs along mask noise without moving a straight outline. Smaller keeps more
+  // of the narrow tips and blades but lets more mask noise through; half a spacing is about the
+  // best on every simulated scan (BENCHMARKS.md, "Where the defaults come from").
   double smoothing_factor = 0.5;
   // Colour agreement: with the views' images, a node also needs the colours most of its plant
   // views show to agree with the cell's colour model (colour_model.h); false: the masks alone.

@@ -71,18 +71,14 @@ struct SurfaceOptions {
 
   // Phase 4: cell merging. Boundary vertices of different cells closer than this many spacings
   // are stitched. Neighbouring clusters of one leaf are one Delaunay edge of the cloud apart
-  // (1-4 spacings), and boundary smoothing pulls outlines in a little further. Measured on the
-  // simulated plants with Algorithm 2's clusters (`avc bench surface`, 2026-12-02): 2.5 cuts
-  // 3 of 14 strap leaves in pieces that 3.5 joins; 5 joins nothing more but bridges the gaps
-  // between neighbouring leaves (RMSE 0.34 -> 0.49 mm on the strap, 0.41 -> 0.66 on the rosette).
+  // (1-4 spacings), and boundary smoothing pulls outlines in a little further. Lower leaves
+  // leaves in pieces; higher bridges the gaps between neighbouring leaves (BENCHMARKS.md, "Where
+  // the defaults come from").
   double stitch_factor = 3.5;
   // Cells of one cluster (pieces of one leaf that a narrow part, sampled by few points, leaves
-  // apart) are stitched across gaps up to this many spacings; <= 0: stitch_factor. Measured
-  // with stitch_clear_of_other_cells (`avc bench surface`, seeds 1-3, 2026-12-03): 5.25 against
-  // 3.5 joins the arching tips of 4 more of the rosette's 18 leaves with leaf clusters on seed 1
-  // (12 -> 16) and changes no other count; the rosette's RMSE with Algorithm 2 rises 0.609 ->
-  // 0.642 mm (seed 1, still the lowest of every method); the simulated scans (`--scans`) keep
-  // their figures within 0.003 of leaf area.
+  // apart) are stitched across gaps up to this many spacings; <= 0: stitch_factor. Wider than
+  // stitch_factor, since within one cluster a bridge joins parts of one leaf (arching tips), at a
+  // small cost in distance to the points (BENCHMARKS.md, "Where the defaults come from").
   double own_cluster_stitch_factor = 5.25;
   // A stitch triangle must face within this angle (degrees) of the two cells' mean normal: no
   // walls between stacked leaves.
@@ -90,20 +86,16 @@ struct SurfaceOptions {
   // When >= 0, a stitch edge between cells of different clusters must join two points of one
   // local surface: its offset within 0.5 |d| of both vertices' tangent planes and within this
   // many |d| of the plane normal to the bisector of their normals, plus 3 noise (the clusterer's
-  // link test, cluster/connected_components.h). Off by default. Measured with 0.1 and
-  // own_cluster_stitch_factor 5.25 (`avc bench surface`, 2026-12-03): the rosette's leaves in
-  // one piece 9 -> 16 of 18 with leaf clusters (7 -> 9 with Algorithm 2), its RMSE 0.457 ->
-  // 0.353 mm, but its area with Algorithm 2 0.928 -> 0.894, and on the simulated scans
-  // (`--scans`) 1-2 points less leaf area (strap 0.862 -> 0.844) at the same precision: the
-  // test also refuses bridges within one leaf where real points' cells meet.
+  // link test, cluster/connected_components.h). On, it keeps more of a rosette's leaves in one
+  // piece and the mesh nearer the points, but it also refuses bridges within one leaf where real
+  // points' cells meet, losing leaf area: off by default (BENCHMARKS.md, "Where the defaults
+  // come from").
   double stitch_link_mean_slope = -1;
   // A stitch triangle whose centroid lies nearer a third cell's vertex than its own cells' is
   // refused: at a rosette's centre, where leaf bases lie stacked a few millimetres apart, the
   // bridge between two leaves would pass over a third, and its faces would lie as stray pieces
-  // on that leaf. Measured (`avc bench surface`, 2026-12-03, own_cluster_stitch_factor 3.5),
-  // rosette leaves in one piece, leaf clusters / Algorithm 2: seed 1 9 -> 12 / 7 -> 10, seed 2
-  // 10 -> 15 / 12 -> 13, seed 3 12 -> 19 / 8 -> 8 of 18-19; bushy up to +2; RMSE 1-4 % lower on
-  // the rosette; broadleaf and strap unchanged; the simulated scans within 0.002 of leaf area.
+  // on that leaf. On by default: more of a rosette's leaves in one piece, the leaf area of the
+  // other plants about unchanged (BENCHMARKS.md, "Where the defaults come from").
   bool stitch_clear_of_other_cells = true;
   SmoothingOptions final_smoothing{2, 0.5, -0.53};
   // Connected pieces of fewer faces than this are dropped at the end (stray fragments).

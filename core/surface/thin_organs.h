@@ -1,14 +1,14 @@
 #pragma once
 
-// Stems, pedicels and siliques as surfaces (issue 35, item 4, first step). Their merged points
-// are too few for Algorithm 3's patches (an organ 1-4 px wide leaves fewer than 4 MVS points in
-// most voxels), but the plant proxy holds them whole and connected. The thin parts of the proxy
-// are the occupied voxels out of reach of any bulky core (a leaf's hull, a pot): their boundary
-// against empty space, smoothed and moved half a voxel in (the carved hull stands about that far
-// outside a thin organ), replaces Algorithm 3's faces there. On the real ROMI scan that surface
-// alone scores 0.83/0.91 precision/recall at 2 mm in 3 pieces at 1.08x the reference's area.
-// Not yet for leafy plants: a leaf's hull in the proxy is a plate thinner than the core depth, so
-// it is taken for an organ too (the option is off by default).
+// Stems, pedicels and siliques as surfaces. Their merged points are too few for Algorithm 3's
+// patches (an organ 1-4 px wide leaves fewer than 4 MVS points in most voxels), but the plant
+// proxy holds them whole and connected. The thin parts of the proxy are the occupied voxels out
+// of reach of any bulky core (a leaf's hull, a pot): their boundary against empty space, smoothed
+// and moved half a voxel in (the carved hull stands about that far outside a thin organ),
+// replaces Algorithm 3's faces there: for plants made of such organs (the real ROMI scan,
+// BENCHMARKS.md, "Where the defaults come from"). Not yet for leafy plants: a leaf's hull in the
+// proxy is a plate thinner than the core depth, so it is taken for an organ too;
+// ThinOrganOptions.enabled is therefore off by default.
 
 #include <Eigen/Core>
 #include <cstdint>

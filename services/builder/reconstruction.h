@@ -38,8 +38,8 @@ struct ReconstructOptions {
   SupportOptions support;
   // MVS points farther than this many voxels from the proxy's occupied voxels are removed from
   // points.ply (merging drops every point outside them either way); negative keeps them all.
-  // On the real ROMI scan 0 gives precision/recall 0.90/0.85 at 2 mm against its reference,
-  // 1 keeps every point (0.82/0.89): the points off the proxy lie within a voxel of it.
+  // Higher keeps more of what patch expansion reaches past the proxy: more recall, less
+  // precision (BENCHMARKS.md, "Where the defaults come from").
   int points_proxy_margin = 0;
 
   // Empty when usable; else the first bad setting (of the MVS, soil and support options).

@@ -55,14 +55,12 @@ struct ActiveVisionOptions {
   bool rank_candidates = true;
   bool remove_redundant = true;
   // Phase 3 also keeps every failing patch at its score with all images. Off (the paper's rule):
-  // only passing patches hold views back. Measured (`avc bench nbv`, 2026-12-03): off keeps
-  // 35 of 40 images on the broadleaf (39 on) at the same 98.8 % ground-truth coverage and 36 on
-  // the bushy plant (40 on) at 96.9 % (97.0 %).
+  // only passing patches hold views back. On keeps more images for little or no gain in
+  // coverage (BENCHMARKS.md, "Where the defaults come from").
   bool prune_holds_failing_scores = false;
   // Phase 3's order counts how useful a view is on the patches' sampled faces (the last needed
-  // view of how many), not on whole patches. Measured (`avc bench nbv`, 2026-12-03): rosette 31
-  // images / 89.3 % coverage (33 / 89.0 % by patches), strap 24 / 97.6 % (97.5 %), maize 23 /
-  // 90.6 % (90.3 %), broadleaf and bushy unchanged.
+  // view of how many), not on whole patches: as few or fewer images for as much or more
+  // coverage on the simulated plants (BENCHMARKS.md, "Where the defaults come from").
   bool prune_order_by_faces = true;
   // With prune_order_by_faces: the fraction of the faces covered with all images that Phase 3
   // may leave with fewer than min_views views (1: the paper's rule alone).

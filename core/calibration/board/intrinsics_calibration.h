@@ -8,9 +8,9 @@
 // (5-fold, median); the best score wins (the simplest on a tie), so terms that only fit the
 // noise of a few views (a k3 of several units from 8 views) lose to the model that predicts new
 // views. It is not the default: held-out views look like the fitted ones, so they cannot show
-// what a dropped term does where no view reached. On 20 noise-free rendered views of a
-// distorted camera the choice (k1 k2 p1 p2) lands rays 0.33 px off at the image edges where the
-// full model stays within 0.25 px. The report names the model (and the scores when chosen).
+// what a dropped term does where no view reached, and on rendered views of a distorted camera the
+// chosen model lands rays further off at the image edges than the full model (BENCHMARKS.md,
+// "Where the defaults come from"). The report names the model (and the scores when chosen).
 //
 // Known intrinsics (IntrinsicsOptions::known, e.g. the maker's or an earlier calibration from
 // many views) are kept as they are: each view's board pose is then solved with them alone
@@ -46,10 +46,9 @@ struct IntrinsicsOptions {
   // False: k1 k2 p1 p2 k3 (OpenCV's default model).
   bool choose_distortion_model = false;
   // A simpler model is kept while its held-out RMS is within this fraction of the best's. 0: the
-  // best. Measured on the simulated cell (52 % corner coverage): the held-out RMS of k1 alone is
-  // only 1.3 % above the full model's, yet k1 alone moves cx by 1.5 px and the cameras by
-  // 0.06 deg; views near the centre cannot show what the outer terms do at the edges, so any
-  // tolerance favours a wrong model there.
+  // best. Higher prefers fewer terms; but views near the centre cannot show what the outer terms
+  // do at the edges, so a model that scores nearly as well can still move the principal point
+  // and the cameras: 0 (BENCHMARKS.md, "Where the defaults come from").
   double model_tolerance = 0;
   int model_folds = 5;
 };

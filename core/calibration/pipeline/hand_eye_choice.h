@@ -3,9 +3,9 @@
 // Closed form or refined robot-world/hand-eye: whichever better predicts the board pose at a
 // robot pose left out of its fit (leave-one-out over the hand-eye poses). The refinement wins on
 // a UR5-class arm (its robot-pose prior is that arm's repeatability), but an arm whose reported
-// poses are ten times less consistent lets it bend the camera to fit them (issue 39: 2.8 deg
-// about the optical axis on a real Franka set, worse in leave-one-out than the closed form), so
-// the data decides.
+// poses are ten times less consistent lets it bend the camera to fit them (2.8 deg about the
+// optical axis on a real Franka set, worse in leave-one-out than the closed form), so the data
+// decides.
 
 #include <Eigen/Geometry>
 #include <string>

@@ -18,15 +18,16 @@ namespace avc::mvs {
 
 struct PatchMvsOptions {
   // Pyramid level the views are processed at (PMVS `level`); -1 = automatic: halve until the
-  // longer image side is at most 1600 px (640x480 and 1280x960 stay at 0). Measured on a
-  // rendered rosette, 30 views 1280x960: level 1 P(1 mm) 0.38 in 8 s, level 0 0.60 in 33 s.
+  // longer image side is at most 1600 px (640x480 and 1280x960 stay at 0). A coarser level is
+  // several times faster but much less precise on leaves (BENCHMARKS.md, "Where the defaults
+  // come from").
   int level = -1;
   // β: the image cell size in pixels at the working level; the goal is one patch per cell
   // (PMVS `csize`).
   int cell_size = 2;
   // μ: the patch is sampled on a μ x μ grid of about one reference pixel (PMVS `wsize` is 7).
-  // 5 measured on the dino at level 0 (1 round): 89k points in 21 s against 102k in 36 s for 7,
-  // both 99.9 % inside; the textured plane keeps its 0.05 px median error.
+  // A larger grid finds somewhat more points for much more time; 5 rather than 7 loses no
+  // accuracy (BENCHMARKS.md, "Where the defaults come from").
   int window = 5;
   // α: an image belongs to V*(p) when its NCC with the reference is at least this, after and
   // before the patch is optimised (PMVS `threshold` and `threshold - 0.3`).
@@ -34,8 +35,8 @@ struct PatchMvsOptions {
   double ncc_threshold_before = 0.4;
   // γ: a patch needs this many images in V*(p), the reference included (PMVS `minImageNum` 3).
   // 0 = automatic: 3, or 4 with 24 views or more, where each surface point is seen by more
-  // images anyway. Measured on the broadleaf scan (30 views 1280x960): 3 -> 4 took P(1 mm)
-  // 0.926 -> 0.956 and R(2 mm) 0.445 -> 0.387.
+  // images anyway. More images per patch: fewer false matches (precision) for less of the
+  // surface covered (recall) (BENCHMARKS.md, "Where the defaults come from").
   int min_images = 0;
   // An image sees a patch only when the angle between the patch normal and the ray to the
   // camera is below this (radians, 60 deg).
@@ -50,15 +51,14 @@ struct PatchMvsOptions {
   // Images matched against each image for seeds (SelectNeighbours).
   int seed_neighbours = 6;
   // Expansion + filtering rounds after the seeds (PMVS: 3). Later rounds refill the cells the
-  // filters emptied: on the dino at level 0, 1 / 2 / 3 rounds gave 89k / 121k / 137k points for
-  // 21 / 36 / ~70 s; 1 keeps the time under PMVS2's 24 s.
+  // filters emptied: each adds fewer points for more time; 1 keeps the run time under PMVS2's
+  // (BENCHMARKS.md, "Where the defaults come from").
   int rounds = 1;
   // Nelder–Mead iterations for one patch, and the most images (best NCC first) it optimises
-  // against; the final V*(p) is taken over all images. Measured on the dino at level 1: 50 / 6
-  // → 20 / 4 cost 45 % less CPU for the same points and inside fraction; 4 → 3 another 10 % on
-  // the dino at level 0 (same points) and on the broadleaf scan (P(1 mm) 0.959 → 0.961, R(2 mm)
-  // 0.392 → 0.378). The optimiser stops once the simplex's costs are within 1e-3 (1e-4 cost 8 %
-  // more time for no gain).
+  // against; the final V*(p) is taken over all images. More of either costs CPU; the defaults
+  // are the least that keep the points and their precision. The optimiser stops once the
+  // simplex's costs are within 1e-3; tighter only costs time (BENCHMARKS.md, "Where the
+  // defaults come from").
   int max_iterations = 20;
   int max_refine_images = 3;
   // A reference patch with a smaller RGB standard deviation (0..255) is untextured: refused.
@@ -67,25 +67,19 @@ struct PatchMvsOptions {
   // more than this many cells' footprints.
   double occlusion_cells = 2.0;
   // Regularity filter: a patch further than this many pixel footprints from the plane fitted
-  // to its neighbours is dropped (PMVS `quadThreshold` 2.5). Measured on the broadleaf scan
-  // (30 views, γ 3): 2.5 / 1.5 / 1.0 gave P(1 mm) 0.926 / 0.938 / 0.949 for R(2 mm) 0.445 /
-  // 0.441 / 0.437, but 1.0 cost the dino (level 0) a quarter of its points (82.8k -> 63.0k).
+  // to its neighbours is dropped (PMVS `quadThreshold` 2.5). Lower is more precise on leaves
+  // for a little recall, but costs a curved, textured object many of its points: PMVS's value
+  // (BENCHMARKS.md, "Where the defaults come from").
   double regularity_threshold = 2.5;
   // Connected groups of patches smaller than this are dropped (filterSmallGroups).
   int min_group_size = 8;
   // Every corner of the patch's sampling grid must fall on usable (mask) pixels in every
   // image it is compared in, not just its centre: a patch straddling a thin leaf's outline
   // could match the view-dependent silhouette edge instead of the surface. 1 on, 0 off, -1
-  // automatic: on when the working images' longer side is at least 1000 px. Measured on the
-  // broadleaf scan (30 views 1280x960): P(1 mm) 0.864 -> 0.926, mean error 0.44 -> 0.32 mm,
-  // R(2 mm) 0.53 -> 0.45; at 640x480 and below a leaf is too few windows wide (a rosette at
-  // 640x480 kept 1,396 of 8,644 points, P(1 mm) 0.44 -> 0.29).
-  // Off by default since the surfacer grows cells over the masks (2026-12-03): the extra points
-  // seed cells where there were none, and the meshes gain more than the points lose. Simulated
-  // 3x10 scans, off against automatic: points 1.3-3.1x; point P(1 mm) broadleaf 0.957 -> 0.882,
-  // bushy 0.996 -> 0.969, rosette 0.749 -> 0.748; leaf mesh F(2 mm) rosette 0.44 -> 0.60,
-  // broadleaf 0.934 -> 0.940, strap 0.75 -> 0.87, bushy 0.977 -> 0.982 (`avc bench surface
-  // --scans`); the demo's broadleaf leaf area 0.953 -> 0.985 at P(2 mm) 98.9 -> 98.8 %.
+  // automatic: on when the working images' longer side is at least 1000 px (below, a leaf is too
+  // few windows wide). On makes the points more precise but fewer. Off by default: the extra
+  // points seed surfacer cells where there were none, which then grow over the masks, and the
+  // meshes gain more than the points lose (BENCHMARKS.md, "Where the defaults come from").
   int whole_patch_in_mask = 0;
   // Patches must lie within this many proxy voxels of an occupied voxel (bounds not empty).
   int bounds_dilation = 1;

@@ -21,9 +21,9 @@ struct PlaneSweepOptions {
   // smallest level whose longer image side is at most 800 px (level 0 for 640x480, level 1 for
   // 1280x960): the patch MVS's rule, so the two are compared on the same pixels.
   int level = -1;
-  // ZNCC window side in pixels at the working level (odd, >= 3). 5 rather than PMVS's 7: on
-  // thin leaves and the dino's edges a wider fronto-parallel window fattens edges (measured:
-  // 7 → 5 raised precision@1mm on a simulated broadleaf from 0.48 to 0.56).
+  // ZNCC window side in pixels at the working level (odd, >= 3). Wider matches weak texture more
+  // reliably, but a fronto-parallel window fattens thin leaves and object edges: 5 rather than
+  // PMVS's 7, for precision (BENCHMARKS.md, "Where the defaults come from").
   int window = 5;
   int neighbours = 4;  // views swept against each reference: SelectNeighbours' best first
   int best_k = 2;      // per pixel and plane: mean ZNCC of the best k neighbours
