@@ -16,6 +16,7 @@
 #include "core/stage/stage_names.h"
 #include "core/util/clock.h"
 #include "core/util/file_io.h"
+#include "core/util/sha256.h"
 #include "orchestrator/report_html.h"
 #include "orchestrator/scan_planner_settings.h"
 #include "orchestrator/scan_stage_jobs.h"
@@ -108,6 +109,7 @@ class ScanRun {
       }
       // What the scan recorded wins; what an older scan did not record comes from the caller.
       for (const auto& [key, value] : recorded) options_.planner_settings[key] = value;
+      KeepOwnConfig();
       return;
     }
     record_.scan_id =
@@ -115,7 +117,18 @@ class ScanRun {
     record_.created_utime = clock_.NowMicros();
     record_.options = {{"calibration_file", options_.calibration_file.string()}};
     RecordPlannerSettings(options_.planner_settings, &record_.options);
+    KeepOwnConfig();
     Persist();
+  }
+
+  // avc scan's own configuration beside its stages' (config/), for the run that last used it.
+  void KeepOwnConfig() {
+    if (options_.configuration.empty()) return;
+    const std::string file = "config/avc-scan.toml";
+    fs::create_directories(dir_ / "config");
+    WriteFileAtomically(dir_ / file, options_.configuration);
+    record_.options["config_file"] = file;
+    record_.options["config_sha256"] = Sha256Hex(options_.configuration);
   }
 
   void Step(ScanState state) {

@@ -54,6 +54,9 @@ struct ScanRunOptions {
   ScanCaptureOptions capture;
   // "section.field=value" overrides of avc-builder's own configuration for this scan's build.
   std::vector<std::string> build_settings;
+  // avc scan's own configuration as TOML (scan_options.h), kept as config/avc-scan.toml and
+  // named in scan.json by its SHA-256; empty: not kept.
+  std::string configuration;
   // The longest a stage (or one plan job) may take, and the longest its service may go without
   // a heartbeat.
   std::chrono::milliseconds stage_timeout{std::chrono::minutes(30)};

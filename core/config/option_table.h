@@ -113,6 +113,25 @@ class OptionTable {
     return RenderToml(values);
   }
 
+  // A Markdown table of every option (the generated options reference, OPTIONS.md).
+  std::string MarkdownReference(const Options& defaults) const {
+    std::string text =
+        "| Option | Default | Unit | Range | What it does |\n|---|---|---|---|---|\n";
+    const auto cell = [](std::string value) {
+      for (size_t at = value.find('|'); at != std::string::npos; at = value.find('|', at + 2)) {
+        value.insert(at, "\\");
+      }
+      return value;
+    };
+    for (const Entry& entry : entries_) {
+      const std::string value = entry.get(defaults);
+      text += fmt::format("| `{}` | `{}` | {} | {} | {} |\n", entry.name,
+                          value.empty() ? "\"\"" : cell(value), cell(entry.spec.unit),
+                          RangeText(entry.spec), cell(entry.spec.doc));
+    }
+    return text;
+  }
+
   // One line per option for --help: "name = default  [unit, min..max]  doc".
   std::string Reference(const Options& defaults) const {
     std::string text;
@@ -194,15 +213,19 @@ class OptionTable {
     }
   }
 
+  // "min..max", "min..", "..max" or "" when unbounded.
+  static std::string RangeText(const OptionSpec& spec) {
+    const bool has_min = spec.min > -std::numeric_limits<double>::infinity();
+    const bool has_max = spec.max < std::numeric_limits<double>::infinity();
+    if (!has_min && !has_max) return "";
+    return fmt::format("{}..{}", has_min ? fmt::format("{}", spec.min) : "",
+                       has_max ? fmt::format("{}", spec.max) : "");
+  }
+
   static std::string Qualifiers(const OptionSpec& spec) {
     std::vector<std::string> parts;
     if (!spec.unit.empty()) parts.push_back(spec.unit);
-    const bool has_min = spec.min > -std::numeric_limits<double>::infinity();
-    const bool has_max = spec.max < std::numeric_limits<double>::infinity();
-    if (has_min || has_max) {
-      parts.push_back(fmt::format("{}..{}", has_min ? fmt::format("{}", spec.min) : "",
-                                  has_max ? fmt::format("{}", spec.max) : ""));
-    }
+    if (const std::string range = RangeText(spec); !range.empty()) parts.push_back(range);
     if (parts.empty()) return "";
     std::string joined;
     for (const std::string& part : parts) joined += (joined.empty() ? "" : ", ") + part;

@@ -6,8 +6,11 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
+
+#include "core/config/option_yaml.h"
 
 namespace avc::config {
 namespace {
@@ -87,11 +90,13 @@ std::vector<Assignment> ReadTomlAssignments(std::string_view text, const std::st
   return assignments;
 }
 
-std::vector<Assignment> ReadTomlFile(const std::string& path) {
+std::vector<Assignment> ReadConfigFile(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw ConfigError(fmt::format("config file {} cannot be read", path));
   std::ostringstream text;
   text << in.rdbuf();
+  const std::string extension = std::filesystem::path(path).extension().string();
+  if (extension == ".yaml" || extension == ".yml") return ReadYamlAssignments(text.str(), path);
   return ReadTomlAssignments(text.str(), path);
 }
 
@@ -99,7 +104,8 @@ std::vector<Assignment> ReadAssignments(const std::vector<std::string>& files,
                                         const std::vector<std::string>& sets) {
   std::vector<Assignment> assignments;
   for (const std::string& file : files) {
-    for (Assignment& assignment : ReadTomlFile(file)) assignments.push_back(std::move(assignment));
+    for (Assignment& assignment : ReadConfigFile(file))
+      assignments.push_back(std::move(assignment));
   }
   for (const std::string& text : sets) assignments.push_back(ParseAssignment(text, "--set"));
   return assignments;

@@ -43,7 +43,8 @@ Assignment ParseAssignment(std::string_view text, std::string where);
 // ([surface.fit] degree = 2 -> "surface.fit.degree"), strings their text, numbers and booleans
 // their TOML spelling; `where` is "file:line". Arrays, dates and syntax errors throw ConfigError.
 std::vector<Assignment> ReadTomlAssignments(std::string_view text, const std::string& file);
-std::vector<Assignment> ReadTomlFile(const std::string& path);
+// A config file's assignments: YAML for a .yaml or .yml file (option_yaml.h), else TOML.
+std::vector<Assignment> ReadConfigFile(const std::string& path);
 
 // Every file's assignments in order, then `sets` ("name=value", named "--set").
 std::vector<Assignment> ReadAssignments(const std::vector<std::string>& files,

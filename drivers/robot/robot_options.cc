@@ -3,6 +3,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/kinematics/envelope_option_table.h"
+
 namespace avc::robot {
 namespace {
 
@@ -60,34 +62,9 @@ void AddMotion(Table& table) {
 }
 
 void AddEnvelope(Table& table) {
+  kinematics::AddFixedEnvelopeOptions(
+      table, "envelope", [](auto& o) -> auto& { return o.envelope; });
   table
-      .Add("envelope.table_z", [](auto& o) -> auto& { return o.envelope.table_z_base_m; },
-           {"m",
-            "the bench's height in the base frame; every checked point stays above it "
-            "(none: no bench)",
-            -10, 10})
-      .Add("envelope.table_clearance",
-           [](auto& o) -> auto& { return o.envelope.table_clearance_m; },
-           {"m", "clearance kept above the bench", 0, 10})
-      .AddText(
-          "envelope.keep_out",
-          [](const RobotNodeConfig& o) {
-            return o.envelope.keep_out ? kinematics::KeepOutText(*o.envelope.keep_out)
-                                       : std::string(config::kNone);
-          },
-          [](RobotNodeConfig& o, std::string_view text) {
-            if (text == config::kNone) {
-              o.envelope.keep_out.reset();
-              return;
-            }
-            o.envelope.keep_out = kinematics::ParseKeepOut(std::string(text));
-            if (!o.envelope.keep_out) {
-              throw std::invalid_argument("not five numbers (x y radius z_min z_max) or none");
-            }
-          },
-          {"m",
-           "keep-out cylinder, e.g. the turntable: \"x y radius z_min z_max\" in the base "
-           "frame, or none"})
       .Add("envelope.max_joint_speed",
            [](auto& o) -> auto& { return o.envelope.max_joint_speed_rad_s; },
            {"rad/s", "fastest joint speed a command may ask", 0.001, 10})

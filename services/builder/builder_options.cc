@@ -3,40 +3,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/segmentation/mask_option_table.h"
+
 namespace avc::builder {
 namespace {
 
 using config::OptionSpec;
 using config::OptionTable;
-
-// The automatic masks' tuning (core/segmentation/plant_mask.h says each one's trade-off).
-void AddMaskTuning(OptionTable<ReconstructOptions>& table) {
-  table
-      .Add("masks.histogram_bins", [](auto& o) -> auto& { return o.masks.histogram_bins; },
-           {"bins", "of the feature histogram Otsu searches", 2, 65536})
-      .Add("masks.dark_fraction", [](auto& o) -> auto& { return o.masks.dark_fraction; },
-           {"", "excess green: R+G+B floor as a fraction of the bright level", 0, 1})
-      .Add("masks.border_fraction", [](auto& o) -> auto& { return o.masks.border_fraction; },
-           {"", "background model: border strip width / min(width, height)", 0, 1})
-      .Add("masks.background_min_scale",
-           [](auto& o) -> auto& { return o.masks.background_min_scale; },
-           {"L*a*b*", "background model: smallest per-channel spread", 1e-6, 1000})
-      .Add("masks.hysteresis", [](auto& o) -> auto& { return o.masks.hysteresis; },
-           {"", "pixels this far below the threshold join plant they touch (0: none)", 0, 1})
-      .Add("masks.green_min_exg", [](auto& o) -> auto& { return o.masks.green_min_exg; },
-           {"", "auto: excess green is a candidate when its plant class is this green", -1, 2})
-      .Add("masks.green_preference", [](auto& o) -> auto& { return o.masks.green_preference; },
-           {"", "auto: excess green wins at this fraction of the background's separability", 1e-6,
-            1000})
-      .Add("masks.close_radius_px", [](auto& o) -> auto& { return o.masks.close_radius_px; },
-           {"px", "closing disc radius (-1: min(width, height) / 400; 0: no closing)", -1, 1000})
-      .Add("masks.min_component_fraction",
-           [](auto& o) -> auto& { return o.masks.min_component_fraction; },
-           {"", "components smaller than this fraction of the largest are dropped", 0, 1})
-      .Add("masks.min_component_image_fraction",
-           [](auto& o) -> auto& { return o.masks.min_component_image_fraction; },
-           {"", "... and those smaller than this fraction of the image", 0, 1});
-}
 
 void AddMethods(OptionTable<ReconstructOptions>& table) {
   table.AddText(
@@ -45,21 +18,9 @@ void AddMethods(OptionTable<ReconstructOptions>& table) {
         o.method = ParseMvsMethod(std::string(text));
       },
       {"", "multi-view stereo: patch (PMVS-style, the paper's), plane-sweep or none"});
-  table.AddText(
-      "masks.method",
-      [](const ReconstructOptions& o) { return segmentation::MaskMethodName(o.masks.method); },
-      [](ReconstructOptions& o, std::string_view text) {
-        for (auto method : {segmentation::MaskMethod::kAuto, segmentation::MaskMethod::kExcessGreen,
-                            segmentation::MaskMethod::kBackgroundDistance}) {
-          if (text == segmentation::MaskMethodName(method)) {
-            o.masks.method = method;
-            return;
-          }
-        }
-        throw std::invalid_argument("not auto, excess_green or background_distance");
-      },
-      {"", "plant masks: auto picks excess_green for green plants, else background_distance"});
-  AddMaskTuning(table);
+  // The automatic masks (core/segmentation/plant_mask.h says each option's trade-off).
+  segmentation::AddMaskOptions(
+      table, "masks", [](auto& o) -> auto& { return o.masks; });
 }
 
 void AddProxy(OptionTable<ReconstructOptions>& table) {

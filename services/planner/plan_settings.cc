@@ -13,21 +13,23 @@ namespace {
 
 config::OptionTable<PlanSettings> MakeTable() {
   config::OptionTable<PlanSettings> table("planner");
+  const auto spec = [](const char* name) { return plan::AlgorithmSettingSpec(name); };
   table
-      .Add(plan::kMaxViews, [](auto& o) -> auto& { return o.planner.max_views; },
-           {"views", "most views a scan keeps (Algorithm 1's budget)", 1, 10000})
-      .Add(plan::kLevels, [](auto& o) -> auto& { return o.planner.levels; },
-           {"", "heights of the initial orbit", 1, 100})
-      .Add(plan::kViewsPerLevel, [](auto& o) -> auto& { return o.planner.views_per_level; },
-           {"views", "views per height of the initial orbit", 1, 1000})
-      .Add(plan::kPruneFaceLoss,
-           [](auto& o) -> auto& { return o.planner.prune_max_covered_faces_lost; },
-           {"",
-            "Phase 3 drops a view when at most this fraction of covered proxy faces is lost: "
-            "higher keeps fewer images",
-            0, 1})
-      .Add(plan::kKeepOutMargin, [](auto& o) -> auto& { return o.keep_out_margin; },
-           {"m", "the arm's keep-out around the plant proxy", 0, 1});
+      .Add(
+          plan::kMaxViews, [](auto& o) -> auto& { return o.planner.max_views; },
+          spec(plan::kMaxViews))
+      .Add(
+          plan::kLevels, [](auto& o) -> auto& { return o.planner.levels; }, spec(plan::kLevels))
+      .Add(
+          plan::kViewsPerLevel, [](auto& o) -> auto& { return o.planner.views_per_level; },
+          spec(plan::kViewsPerLevel))
+      .Add(
+          plan::kPruneFaceLoss,
+          [](auto& o) -> auto& { return o.planner.prune_max_covered_faces_lost; },
+          spec(plan::kPruneFaceLoss))
+      .Add(
+          plan::kKeepOutMargin, [](auto& o) -> auto& { return o.keep_out_margin; },
+          spec(plan::kKeepOutMargin));
   return table;
 }
 

@@ -121,6 +121,36 @@ TEST(OptionTable, ErrorsNameTheOptionAndWhereItCameFrom) {
   EXPECT_EQ(options.count, 5);
 }
 
+TEST(OptionTable, YamlFilesReadAsTomlOnesDo) {
+  const auto yaml = std::filesystem::path(testing::TempDir()) / "options.yaml";
+  std::ofstream(yaml) << "# the lab's settings\ncount: 7\nlabel: \"x y\"\ninner:\n  ratio: 0.25\n"
+                         "  enabled: false\n";
+  const auto toml = std::filesystem::path(testing::TempDir()) / "same.toml";
+  std::ofstream(toml) << "count = 7\nlabel = \"x y\"\n[inner]\nratio = 0.25\nenabled = false\n";
+  const Options from_yaml = Table().Load(Options{}, {yaml.string()}, {});
+  EXPECT_EQ(from_yaml.count, 7);
+  EXPECT_EQ(from_yaml.label, "x y");
+  EXPECT_DOUBLE_EQ(from_yaml.inner.ratio, 0.25);
+  EXPECT_FALSE(from_yaml.inner.enabled);
+  EXPECT_EQ(Table().ToToml(from_yaml),
+            Table().ToToml(Table().Load(Options{}, {toml.string()}, {})));
+
+  std::ofstream(yaml, std::ios::trunc) << "count: 5\ninner:\n  ratio: 2.0\n";
+  EXPECT_EQ(ErrorOf([&] { Table().Load(Options{}, {yaml.string()}, {}); }),
+            "avc-test: " + yaml.string() + ":3 inner.ratio=2.0: 2 is above the maximum 1");
+  std::ofstream(yaml, std::ios::trunc) << "count: [1, 2]\n";
+  EXPECT_NE(ErrorOf([&] { Table().Load(Options{}, {yaml.string()}, {}); }).find(":1: count: "),
+            std::string::npos);
+  std::ofstream(yaml, std::ios::trunc) << "count: 5\n  label: [\n";
+  EXPECT_NE(ErrorOf([&] { Table().Load(Options{}, {yaml.string()}, {}); }).find("options.yaml:"),
+            std::string::npos);
+  std::ofstream(yaml, std::ios::trunc) << "- count\n";
+  EXPECT_NE(ErrorOf([&] {
+              Table().Load(Options{}, {yaml.string()}, {});
+            }).find("a map of sections and options"),
+            std::string::npos);
+}
+
 TEST(OptionTable, FileErrorsNameTheLine) {
   const auto file = std::filesystem::path(testing::TempDir()) / "bad.toml";
   std::ofstream(file) << "count = 5\n\n[inner]\nratio = 2.0\n";

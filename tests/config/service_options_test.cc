@@ -1,6 +1,6 @@
-// Every service's option table: its configuration in force reads back to itself (so a scan's
-// config/ or a log's CONFIG reproduces the service), every option says what it is, and the
-// values that need a text form of their own survive the round trip.
+// Every service's option table (and avc scan's): its configuration in force reads back to itself
+// (so a scan's config/ or a log's CONFIG reproduces the service), every option says what it is, and
+// the values that need a text form of their own survive the round trip.
 
 #include <gtest/gtest.h>
 
@@ -10,6 +10,7 @@
 #include "drivers/camera/camera_service_options.h"
 #include "drivers/robot/robot_options.h"
 #include "drivers/turntable/turntable_options.h"
+#include "orchestrator/scan_options.h"
 #include "services/builder/builder_options.h"
 #include "services/calibrator/calibrator_options.h"
 #include "services/clusterer/clusterer_options.h"
@@ -40,6 +41,7 @@ TEST(ServiceOptions, EveryServicesConfigurationReadsBackToItself) {
   ExpectRoundTrip(turntable::TurntableOptionTable(), turntable::TurntableNodeOptions{});
   ExpectRoundTrip(camera_driver::CameraOptionTable(), camera_driver::CameraServiceOptions{});
   ExpectRoundTrip(calibrator::CalibratorOptionTable(), calibrator::CalibratorNodeOptions{});
+  ExpectRoundTrip(orchestrator::ScanOptionTable(), orchestrator::ScanOptions{});
 
   robot::RobotNodeConfig robot;
   ExpectRoundTrip(robot::RobotOptionTable(), robot);

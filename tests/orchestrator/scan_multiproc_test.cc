@@ -97,6 +97,9 @@ void ExpectFinishedScan(const fs::path& scan_dir, const bench::CellProcesses& ce
     EXPECT_TRUE(fs::exists(scan_dir / file)) << file;
   }
   EXPECT_GT(fs::file_size(scan_dir / "model/mesh.ply"), 1000u);
+  // avc scan's own configuration is kept beside its stages', the envelope it gave the planner in.
+  const std::string configuration = testing::ReadFile(scan_dir / "config/avc-scan.toml");
+  EXPECT_NE(configuration.find("[envelope]\ntable_z = "), std::string::npos) << configuration;
   // The report says what the surfacer made of the clusters.
   const nlohmann::json report = nlohmann::json::parse(testing::ReadFile(scan_dir / "report.json"));
   const nlohmann::json& surface = report.at("surface");

@@ -6,6 +6,7 @@
 #include <signal.h>
 
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <thread>
 
@@ -118,6 +119,46 @@ TEST(CliCommands, HelpListsCommandsAndBenchmarks) {
   EXPECT_NE(typo.output.find("avc: no command named 'recontsruct'\nRun 'avc --help'"),
             std::string::npos)
       << typo.output;
+}
+
+// avc scan takes its options from --config (TOML or YAML), --set and its flags, and refuses a bad
+// one by name and origin before it touches the bus or the scan directory.
+TEST(CliCommands, ScanRefusesABadOptionByNameBeforeStarting) {
+  TempDir dir;
+  const std::filesystem::path calibration = dir / "calibration.yaml";
+  std::ofstream(calibration) << "not read: the options are checked first\n";
+  const std::filesystem::path scan_dir = dir / "scan";
+  const std::string avc = Executable("avc").string();
+  const Outcome set = RunCommand({avc, "scan", scan_dir.string(), "--calibration",
+                                  calibration.string(), "--set", "planner.max_views=0"},
+                                 dir / "set.log", std::chrono::seconds(10));
+  EXPECT_EQ(ExitCode(set.status), 1);
+  EXPECT_NE(set.output.find("avc scan: scan: --set planner.max_views=0: 0 is below the minimum 1"),
+            std::string::npos)
+      << set.output;
+  const std::filesystem::path yaml = dir / "scan.yaml";
+  std::ofstream(yaml) << "capture:\n  encoding: gif\n";
+  const Outcome file = RunCommand({avc, "scan", scan_dir.string(), "--calibration",
+                                   calibration.string(), "--config", yaml.string()},
+                                  dir / "file.log", std::chrono::seconds(10));
+  EXPECT_EQ(ExitCode(file.status), 1);
+  EXPECT_NE(file.output.find(yaml.string() + ":2 capture.encoding=gif: not png or jpeg"),
+            std::string::npos)
+      << file.output;
+  const Outcome flag =
+      RunCommand({avc, "scan", scan_dir.string(), "--calibration", calibration.string(),
+                  "--keep-out", "0", "0", "0.2", "0.5", "0.1"},
+                 dir / "flag.log", std::chrono::seconds(10));
+  EXPECT_EQ(ExitCode(flag.status), 1);
+  EXPECT_NE(flag.output.find("avc scan: scan: the safety envelope is not usable: keep_out"),
+            std::string::npos)
+      << flag.output;
+  EXPECT_FALSE(std::filesystem::exists(scan_dir)) << "nothing is written for a refused option";
+  const Outcome help =
+      RunCommand({avc, "scan", "--help"}, dir / "help.log", std::chrono::seconds(10));
+  EXPECT_EQ(ExitCode(help.status), 0);
+  EXPECT_NE(help.output.find("  planner.max_views = none  [views, 1..10000]"), std::string::npos)
+      << help.output;
 }
 
 // lcm-spy under Xvfb finds every AVC type: the jar is on its CLASSPATH and Java 17 accepts the

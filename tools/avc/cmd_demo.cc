@@ -22,15 +22,17 @@
 #include "core/launch/find_program.h"
 #include "core/stage/stage_client.h"
 #include "drivers/client/cell_client.h"
+#include "orchestrator/scan_options.h"
 #include "orchestrator/scan_run.h"
 #include "services/calibrator/calibration_collector.h"
 #include "sim/cell/cell_fixtures.h"
 #include "sim/scene/plant.h"
 #include "tools/avc/bus_flags.h"
 #include "tools/avc/commands.h"
+#include "tools/avc/config_flags.h"
 #include "tools/avc/demo_cell.h"
-#include "tools/avc/planner_flags.h"
 #include "tools/avc/run_guarded.h"
+#include "tools/avc/scan_flags.h"
 #include "tools/avc/scan_progress.h"
 
 namespace avc::cli {
@@ -46,7 +48,7 @@ struct DemoArgs {
   std::string calibration;
   bool recalibrate = false;
   double time_scale = 10;
-  PlannerFlags planner;
+  ConfigFlags config;  // the scan's options (orchestrator/scan_options.h)
   bus::BusFlags bus;
 };
 
@@ -139,6 +141,11 @@ fs::path ChooseCalibration(const DemoArgs& args, const fs::path& dir) {
 }
 
 int RunDemo(const DemoArgs& args) {
+  // The scan's options first: a bad one is refused before anything starts.
+  const auto& table = orchestrator::ScanOptionTable();
+  orchestrator::ScanOptions scan_defaults;
+  scan_defaults.envelope = sim::NominalCellEnvelope();
+  const orchestrator::ScanOptions scan_options = LoadOptions(table, args.config, scan_defaults);
   const fs::path dir = ChooseDemoDir(args);
   fs::create_directories(dir);
   std::cerr << "avc demo: results go to " << dir.string() << "\n";
@@ -168,10 +175,10 @@ int RunDemo(const DemoArgs& args) {
   client::CellClient client(bus, loop, "avc-scan", cell.key());
   stage::StageClient stages(bus, loop, "avc-scan");
 
-  orchestrator::ScanRunOptions scan;
+  orchestrator::ScanRunOptions scan = scan_options.RunOptions();
   scan.scan_dir = dir;
   scan.calibration_file = calibration;
-  scan.planner_settings = PlanJobSettings(args.planner, sim::NominalCellEnvelope());
+  scan.configuration = table.ToToml(scan_options);
   scan.stop_requested = [&loop] { return loop.quitting(); };
   ScanStateBroadcast broadcast(bus, loop);
   scan.on_kept_cameras = [&broadcast](const std::string& id, const auto& cameras) {
@@ -229,7 +236,7 @@ void RegisterDemo(CLI::App& root, int* exit_code) {
                    "simulated seconds per real second (robot and turntable motion)")
       ->capture_default_str()
       ->check(CLI::Range(0.1, 100.0));
-  AddPlannerFlags(command, &args->planner);
+  AddScanOptionFlags(command, &args->config);
   AddBusFlags(command, &args->bus);
   SetGuardedRun(command, exit_code, [args] { return RunDemo(*args); });
 }

@@ -14,17 +14,18 @@
 #include <utility>
 
 #include "core/bus/bus.h"
-#include "core/plan/plan_settings.h"
 #include "core/stage/stage_client.h"
 #include "drivers/client/cell_client.h"
+#include "orchestrator/scan_options.h"
 #include "orchestrator/scan_run.h"
 #include "orchestrator/scan_states.h"
 #include "tools/avc/auth_flags.h"
 #include "tools/avc/bus_flags.h"
 #include "tools/avc/commands.h"
+#include "tools/avc/config_flags.h"
 #include "tools/avc/envelope_flags.h"
-#include "tools/avc/planner_flags.h"
 #include "tools/avc/run_guarded.h"
+#include "tools/avc/scan_flags.h"
 #include "tools/avc/scan_progress.h"
 
 namespace avc::cli {
@@ -38,10 +39,8 @@ struct ScanArgs {
   std::string calibration;
   bool resume = false;
   bool states = false;
-  bool jpeg = false;
-  PlannerFlags planner;
-  double ready_timeout_s = 30;
-  EnvelopeFlags envelope;
+  ConfigFlags config;
+  EnvelopeFlags envelope;  // envelope.* shorthands that take five numbers (--keep-out)
   AuthFlags auth;
   bus::BusFlags bus;
 };
@@ -67,17 +66,16 @@ int RunScanCommand(const ScanArgs& args) {
         "`avc calibrate`)");
   }
 
-  orchestrator::ScanRunOptions options;
+  ConfigFlags config = args.config;
+  for (config::Assignment& setting : EnvelopeSettings(args.envelope)) {
+    config.shorthands.push_back(std::move(setting));
+  }
+  const auto& table = orchestrator::ScanOptionTable();
+  const orchestrator::ScanOptions scan = LoadOptions(table, config);
+  orchestrator::ScanRunOptions options = scan.RunOptions();
   options.scan_dir = dir;
   options.calibration_file = args.calibration;
-  options.planner_settings = PlanJobSettings(args.planner, DriverEnvelopeOf(args.envelope));
-  // Algorithm 1's counts the caller chose: a resume may not change them.
-  for (const char* key : {plan::kMaxViews, plan::kViewsPerLevel, plan::kPruneFaceLoss}) {
-    if (options.planner_settings.contains(key)) options.planner_settings_given.insert(key);
-  }
-  if (args.jpeg) options.capture.encoding = avc::image_t::ENCODING_JPEG;
-  options.ready_timeout =
-      std::chrono::milliseconds(static_cast<int64_t>(args.ready_timeout_s * 1e3));
+  options.configuration = table.ToToml(scan);
 
   bus::Bus bus(bus::ResolveBusOptions(args.bus, "avc-scan"));
   bus::EventLoop loop;
@@ -123,14 +121,10 @@ void RegisterScan(CLI::App& root, int* exit_code) {
   command->add_flag("--resume", args->resume, "continue the scan in DIR where it stopped");
   command->add_flag("--states", args->states,
                     "print the scan's states, the services each needs and where each may go");
-  AddPlannerFlags(command, &args->planner, /*views_per_height=*/true);
+  AddScanOptionFlags(command, &args->config);
+  AddShorthandSwitch(command, &args->config, "--jpeg", "capture.encoding", "jpeg",
+                     "keep the camera's JPEG (default: lossless PNG)");
   AddEnvelopeFlags(command, &args->envelope);
-  command->add_flag("--jpeg", args->jpeg, "keep the camera's JPEG (default: lossless PNG)");
-  command
-      ->add_option("--ready-timeout", args->ready_timeout_s,
-                   "seconds to wait for the services a step needs")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
   AddSenderKeyFlag(command, &args->auth);
   AddBusFlags(command, &args->bus);
   SetGuardedRun(command, exit_code, [args] { return RunScanCommand(*args); });

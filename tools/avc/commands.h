@@ -33,5 +33,6 @@ void RegisterScan(CLI::App& root, int* exit_code);
 void RegisterDemo(CLI::App& root, int* exit_code);
 void RegisterReport(CLI::App& root, int* exit_code);
 void RegisterKey(CLI::App& root, int* exit_code);
+void RegisterOptions(CLI::App& root, int* exit_code);
 
 }  // namespace avc::cli

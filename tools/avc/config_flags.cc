@@ -1,5 +1,10 @@
 #include "tools/avc/config_flags.h"
 
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstdint>
+
 #include "core/config/option_text.h"
 
 namespace avc::cli {
@@ -21,7 +26,8 @@ void AddConfigFlags(CLI::App* command, ConfigFlags* flags, const std::string& re
   command
       ->add_option("--config", flags->files,
                    "options from a TOML file ([section] tables of field = value; a scan folder's "
-                   "config/<service>.toml is one); repeatable, later files win")
+                   "config/<service>.toml is one) or a YAML one (.yaml, .yml: nested maps); "
+                   "repeatable, later files win")
       ->check(CLI::ExistingFile);
   command
       ->add_option("--set", flags->sets,
@@ -58,7 +64,13 @@ void AddScaledShorthand(CLI::App* command, ConfigFlags* flags, const std::string
   command->add_option_function<double>(
       flag,
       [flags, name = FlagName(flag), option, scale](double value) {
-        flags->shorthands.push_back({option, config::RealText(value * scale), name});
+        // A whole result reads as an integer too (seconds given for an option in ms).
+        const double scaled = value * scale;
+        const bool whole = std::abs(scaled) < 1e15 && scaled == std::round(scaled);
+        flags->shorthands.push_back(
+            {option,
+             whole ? fmt::format("{}", static_cast<int64_t>(scaled)) : config::RealText(scaled),
+             name});
       },
       help + " (" + option + ")");
 }

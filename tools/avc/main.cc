@@ -45,6 +45,7 @@ int main(int argc, char** argv) {
   avc::cli::RegisterDemo(app, &exit_code);
   avc::cli::RegisterReport(app, &exit_code);
   avc::cli::RegisterKey(app, &exit_code);
+  avc::cli::RegisterOptions(app, &exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
