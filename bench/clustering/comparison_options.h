@@ -9,11 +9,11 @@
 #include <string>
 #include <vector>
 
-#include "core/cluster/baselines/ipddp.h"
-#include "core/cluster/baselines/kmeans.h"
-#include "core/cluster/baselines/region_growing.h"
-#include "core/cluster/baselines/spectral_dense.h"
-#include "core/cluster/baselines/spectral_sparse.h"
+#include "bench/clustering/baselines/ipddp.h"
+#include "bench/clustering/baselines/kmeans.h"
+#include "bench/clustering/baselines/region_growing.h"
+#include "bench/clustering/baselines/spectral_dense.h"
+#include "bench/clustering/baselines/spectral_sparse.h"
 #include "core/cluster/point_set.h"
 
 namespace avc::bench {

@@ -6,14 +6,14 @@
 
 #include "bench/mvs/plant_organs.h"
 #include "bench/summary.h"
+#include "bench/surface/baselines/advancing_front.h"
+#include "bench/surface/baselines/greedy_projection.h"
+#include "bench/surface/baselines/poisson_trimmed.h"
+#include "bench/surface/baselines/pound_patches.h"
 #include "bench/surface/leaf_connectivity.h"
 #include "core/cluster/cluster_plant.h"
 #include "core/cluster/data_scale.h"
 #include "core/eval/metrics.h"
-#include "core/surface/baselines/advancing_front.h"
-#include "core/surface/baselines/greedy_projection.h"
-#include "core/surface/baselines/poisson_trimmed.h"
-#include "core/surface/baselines/pound_patches.h"
 #include "core/surface/surface_reconstruction.h"
 #include "core/traits/plant_traits.h"
 #include "tests/surface/surface_test_points.h"  // the plant test's leaf sampling, reused
