@@ -17,9 +17,9 @@
 #include "core/util/clock.h"
 #include "core/util/file_io.h"
 #include "core/util/sha256.h"
-#include "orchestrator/report_html.h"
 #include "orchestrator/scan_planner_settings.h"
 #include "orchestrator/scan_stage_jobs.h"
+#include "report/report_html.h"
 
 namespace avc::orchestrator {
 namespace {
@@ -476,7 +476,7 @@ class ScanRun {
                        "model/traits.csv",
                        "model/traits.json"};
     WriteFileAtomically(dir_ / "report.json", report.dump(2) + "\n");
-    WriteReportHtml(dir_);
+    report::WriteReportHtml(dir_);
   }
 
   client::CellClient& cell_;

@@ -9,8 +9,8 @@
 
 #include "core/camera/camera_io.h"
 #include "core/eval/coverage.h"
+#include "core/eval/eval_report_html.h"
 #include "core/eval/metrics.h"
-#include "core/eval/report_html.h"
 #include "core/eval/report_json.h"
 #include "core/eval/report_plot.h"
 #include "core/geometry/mesh_io.h"

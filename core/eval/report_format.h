@@ -1,6 +1,6 @@
 #pragma once
 
-// Figures formatted the same way in the text and HTML reports (report_text.h, report_html.h),
+// Figures formatted the same way in the text and HTML reports (report_text.h, eval_report_html.h),
 // read from the report JSON.
 
 #include <nlohmann/json.hpp>

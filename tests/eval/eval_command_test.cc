@@ -11,7 +11,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/camera/camera_io.h"
-#include "core/eval/report_html.h"
+#include "core/eval/eval_report_html.h"
 #include "core/util/web_text.h"
 #include "tests/eval/test_scenes.h"
 #include "tests/support/test_support.h"

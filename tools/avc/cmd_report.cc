@@ -1,4 +1,4 @@
-// avc report: report.html for a finished scan directory (orchestrator/report_html.h), the same
+// avc report: report.html for a finished scan directory (report/report_html.h), the same
 // page `avc scan` writes at its end; run again after changing the model or the page.
 
 #include <filesystem>
@@ -6,7 +6,7 @@
 #include <memory>
 #include <string>
 
-#include "orchestrator/report_html.h"
+#include "report/report_html.h"
 #include "tools/avc/commands.h"
 #include "tools/avc/run_guarded.h"
 
@@ -29,7 +29,7 @@ void RegisterReport(CLI::App& root, int* exit_code) {
       ->required()
       ->check(CLI::ExistingDirectory);
   SetGuardedRun(command, exit_code, [dir] {
-    orchestrator::WriteReportHtml(*dir);
+    report::WriteReportHtml(*dir);
     std::cout << (std::filesystem::path(*dir) / "report.html").string() << "\n";
     return 0;
   });

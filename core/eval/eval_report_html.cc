@@ -1,4 +1,4 @@
-#include "core/eval/report_html.h"
+#include "core/eval/eval_report_html.h"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "orchestrator/report_coverage.h"
+#include "report/report_coverage.h"
 
 #include <fmt/format.h>
 
@@ -6,10 +6,10 @@
 
 #include "core/eval/coverage.h"
 #include "core/kinematics/row_major_pose.h"
-#include "orchestrator/report_encode.h"
-#include "orchestrator/report_svg.h"
+#include "report/report_encode.h"
+#include "report/report_svg.h"
 
-namespace avc::orchestrator::report {
+namespace avc::report {
 namespace {
 
 constexpr double kSamplesPerM2 = 20000;  // a few thousand samples on a plant: a second or two
@@ -19,13 +19,15 @@ constexpr uint64_t kSeed = 1;
 
 std::optional<CoverageCurve> CoverageOfCaptures(const ReportInputs& in) {
   if (!in.ground_truth || !in.scan || !in.calibration) return std::nullopt;
-  std::vector<CaptureRecord> captures;
-  for (const CaptureRecord& c : in.scan->captures) {
+  std::vector<orchestrator::CaptureRecord> captures;
+  for (const orchestrator::CaptureRecord& c : in.scan->captures) {
     if (c.phase == "initial" || c.phase == "active") captures.push_back(c);
   }
   if (captures.empty()) return std::nullopt;
   std::sort(captures.begin(), captures.end(),
-            [](const CaptureRecord& a, const CaptureRecord& b) { return a.index < b.index; });
+            [](const orchestrator::CaptureRecord& a, const orchestrator::CaptureRecord& b) {
+              return a.index < b.index;
+            });
   const eval::CoverageModel model(*in.ground_truth, kSamplesPerM2, kSeed);
   const int needed = model.options().min_views;
   std::vector<int> counts(model.samples().points.size(), 0);
@@ -36,7 +38,7 @@ std::optional<CoverageCurve> CoverageOfCaptures(const ReportInputs& in) {
     const auto covered = std::count_if(c.begin(), c.end(), [&](int n) { return n >= needed; });
     return c.empty() ? 0.0 : static_cast<double>(covered) / static_cast<double>(c.size());
   };
-  for (const CaptureRecord& c : captures) {
+  for (const orchestrator::CaptureRecord& c : captures) {
     const camera::Camera camera = in.calibration->CameraAt(
         kinematics::IsometryFromRowMajor(c.reported_T_base_flange.data()), c.reported_table_angle);
     const std::vector<uint8_t> seen = model.SeenBy(camera);
@@ -74,4 +76,4 @@ std::string CoverageSection(const ReportInputs& in) {
                              {static_cast<double>(curve->kept), curve->kept_fraction});
 }
 
-}  // namespace avc::orchestrator::report
+}  // namespace avc::report

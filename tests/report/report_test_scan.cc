@@ -1,4 +1,4 @@
-#include "tests/orchestrator/report_test_scan.h"
+#include "tests/report/report_test_scan.h"
 
 #include <Eigen/Geometry>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "orchestrator/report_svg.h"
+#include "report/report_svg.h"
 
 #include <fmt/format.h>
 
@@ -7,9 +7,9 @@
 #include <cmath>
 #include <numeric>
 
-#include "orchestrator/report_encode.h"
+#include "report/report_encode.h"
 
-namespace avc::orchestrator::report {
+namespace avc::report {
 namespace {
 
 struct Axes {
@@ -177,4 +177,4 @@ std::string LineChartSvg(const std::vector<double>& fractions, const std::string
   return svg + "</svg>\n";
 }
 
-}  // namespace avc::orchestrator::report
+}  // namespace avc::report

@@ -12,7 +12,7 @@
 
 #include "core/util/web_text.h"
 
-namespace avc::orchestrator::report {
+namespace avc::report {
 
 // The values as little-endian bytes, base64 encoded (a typed array's buffer on any host).
 std::string Base64Floats(const std::vector<float>& values);
@@ -27,4 +27,4 @@ std::array<uint8_t, 3> ClusterColour(int32_t cluster);
 // "#rrggbb".
 std::string CssColour(const std::array<uint8_t, 3>& rgb);
 
-}  // namespace avc::orchestrator::report
+}  // namespace avc::report

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "orchestrator/report_inputs.h"
+#include "report/report_inputs.h"
 
-namespace avc::orchestrator::report {
+namespace avc::report {
 
 struct CoverageCurve {
   std::vector<double> after;  // [k]: coverage of the first k + 1 images
@@ -28,4 +28,4 @@ std::optional<CoverageCurve> CoverageOfCaptures(const ReportInputs& in);
 // there is none.
 std::string CoverageSection(const ReportInputs& in);
 
-}  // namespace avc::orchestrator::report
+}  // namespace avc::report

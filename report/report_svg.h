@@ -12,7 +12,7 @@
 
 #include "core/geometry/mesh.h"
 
-namespace avc::orchestrator::report {
+namespace avc::report {
 
 enum class MeshView { kFront, kSide, kTop };  // looking along +y, along -x, down -z (z is up)
 
@@ -37,4 +37,4 @@ std::string BarChartSvg(const std::vector<std::pair<std::string, double>>& bars,
 std::string LineChartSvg(const std::vector<double>& fractions, const std::string& x_label,
                          const std::string& y_label, std::pair<double, double> marked = {});
 
-}  // namespace avc::orchestrator::report
+}  // namespace avc::report

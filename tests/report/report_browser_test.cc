@@ -9,11 +9,11 @@
 #include <opencv2/imgcodecs.hpp>
 #include <string>
 
-#include "orchestrator/report_html.h"
-#include "tests/orchestrator/report_test_scan.h"
+#include "report/report_html.h"
+#include "tests/report/report_test_scan.h"
 #include "tests/support/test_support.h"
 
-namespace avc::orchestrator {
+namespace avc::report {
 namespace {
 
 namespace fs = std::filesystem;
@@ -87,4 +87,4 @@ TEST_F(ReportBrowser, TheThreeDViewIsNotBlank) {
 }
 
 }  // namespace
-}  // namespace avc::orchestrator
+}  // namespace avc::report

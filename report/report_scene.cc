@@ -1,4 +1,4 @@
-#include "orchestrator/report_scene.h"
+#include "report/report_scene.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -6,9 +6,9 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
-#include "orchestrator/report_encode.h"
+#include "report/report_encode.h"
 
-namespace avc::orchestrator::report {
+namespace avc::report {
 namespace {
 
 std::string Bytes(const std::vector<std::array<uint8_t, 3>>& rgb) {
@@ -62,7 +62,7 @@ nlohmann::ordered_json PointsJson(const geometry::PointCloud& cloud) {
 std::map<std::string, std::string> PhasesByImage(const ReportInputs& in) {
   std::map<std::string, std::string> phases;
   if (!in.scan) return phases;
-  for (const CaptureRecord& c : in.scan->captures) {
+  for (const orchestrator::CaptureRecord& c : in.scan->captures) {
     phases[std::filesystem::path(c.file).filename().string()] = c.phase;
   }
   return phases;
@@ -130,4 +130,4 @@ std::string SceneJson(const ReportInputs& in) {
   return text;
 }
 
-}  // namespace avc::orchestrator::report
+}  // namespace avc::report

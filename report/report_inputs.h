@@ -16,12 +16,12 @@
 #include "core/geometry/point_cloud.h"
 #include "orchestrator/scan_record.h"
 
-namespace avc::orchestrator::report {
+namespace avc::report {
 
 struct ReportInputs {
   nlohmann::json report;  // report.json
   geometry::Mesh mesh;    // model/mesh.ply
-  std::optional<ScanRecord> scan;
+  std::optional<orchestrator::ScanRecord> scan;
   std::optional<geometry::PointCloud> points;  // model/points.ply
   std::optional<size_t> cluster_points;        // points in model/clusters.ply
   std::vector<camera::NamedCamera> cameras;    // cameras.json (empty when absent)
@@ -34,4 +34,4 @@ struct ReportInputs {
 // unreadable.
 ReportInputs LoadReportInputs(const std::filesystem::path& scan_dir);
 
-}  // namespace avc::orchestrator::report
+}  // namespace avc::report

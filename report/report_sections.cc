@@ -1,4 +1,4 @@
-#include "orchestrator/report_sections.h"
+#include "report/report_sections.h"
 
 #include <fmt/format.h>
 
@@ -6,10 +6,10 @@
 #include <ctime>
 #include <filesystem>
 
-#include "orchestrator/report_encode.h"
-#include "orchestrator/report_svg.h"
+#include "report/report_encode.h"
+#include "report/report_svg.h"
 
-namespace avc::orchestrator::report {
+namespace avc::report {
 namespace {
 
 using nlohmann::json;
@@ -84,7 +84,7 @@ std::string HeaderSection(const ReportInputs& in) {
                                  EscapeHtml(r.value("scan_id", std::string("(no id)"))));
   if (in.scan) {
     html += fmt::format("Started {} · state {}", Date(in.scan->created_utime),
-                        EscapeHtml(std::string(StateName(in.scan->state))));
+                        EscapeHtml(std::string(orchestrator::StateName(in.scan->state))));
     if (!in.scan->cell.empty()) html += " · cell " + EscapeHtml(in.scan->cell);
   } else {
     html += "No scan.json: date and state unknown";
@@ -145,7 +145,7 @@ std::string ViewsSection(const ReportInputs& in) {
   html +=
       "<table><tr><th>#</th><th>image</th><th>phase</th><th>table (°)</th><th>reason</th>"
       "<th>kept</th></tr>\n";
-  for (const CaptureRecord& c : in.scan->captures) {
+  for (const orchestrator::CaptureRecord& c : in.scan->captures) {
     html += fmt::format("<tr{}>", c.kept ? "" : " class=\"dropped\"") +
             NumCell(std::to_string(c.index)) +
             Cell(std::filesystem::path(c.file).filename().string()) + Cell(c.phase) +
@@ -259,4 +259,4 @@ std::string NotesSection(const ReportInputs& in) {
   return html + "</ul>\n";
 }
 
-}  // namespace avc::orchestrator::report
+}  // namespace avc::report

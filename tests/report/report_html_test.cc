@@ -1,4 +1,4 @@
-#include "orchestrator/report_html.h"
+#include "report/report_html.h"
 
 #include <gtest/gtest.h>
 
@@ -6,10 +6,10 @@
 #include <regex>
 #include <string>
 
-#include "tests/orchestrator/report_test_scan.h"
+#include "tests/report/report_test_scan.h"
 #include "tests/support/test_support.h"
 
-namespace avc::orchestrator {
+namespace avc::report {
 namespace {
 
 namespace fs = std::filesystem;
@@ -130,4 +130,4 @@ TEST(ReportHtml, NamesAMissingReportOrMesh) {
 }
 
 }  // namespace
-}  // namespace avc::orchestrator
+}  // namespace avc::report

@@ -1,4 +1,4 @@
-#include "orchestrator/report_inputs.h"
+#include "report/report_inputs.h"
 
 #include <fmt/format.h>
 
@@ -9,7 +9,7 @@
 #include "core/geometry/point_cloud_io.h"
 #include "core/util/file_io.h"
 
-namespace avc::orchestrator::report {
+namespace avc::report {
 namespace {
 
 namespace fs = std::filesystem;
@@ -68,7 +68,7 @@ ReportInputs LoadReportInputs(const fs::path& scan_dir) {
   }
   in.mesh = ReadRequiredMesh(scan_dir / "model" / "mesh.ply");
   ReadOptional(scan_dir, "scan.json", &in.notes,
-               [&](const fs::path&) { in.scan = LoadScanRecord(scan_dir); });
+               [&](const fs::path&) { in.scan = orchestrator::LoadScanRecord(scan_dir); });
   ReadOptional(scan_dir, "model/points.ply", &in.notes,
                [&](const fs::path& p) { in.points = geometry::ReadPointCloud(p); });
   ReadOptional(scan_dir, "model/clusters.ply", &in.notes,
@@ -84,4 +84,4 @@ ReportInputs LoadReportInputs(const fs::path& scan_dir) {
   return in;
 }
 
-}  // namespace avc::orchestrator::report
+}  // namespace avc::report

@@ -1,16 +1,16 @@
 // The report's coverage curve: captures in order, framing frames left out, each placed by the
 // calibration from its reported pose, scored on the ground truth.
 
-#include "orchestrator/report_coverage.h"
+#include "report/report_coverage.h"
 
 #include <gtest/gtest.h>
 
 #include <string>
 
 #include "core/kinematics/row_major_pose.h"
-#include "tests/orchestrator/report_test_scan.h"
+#include "tests/report/report_test_scan.h"
 
-namespace avc::orchestrator::report {
+namespace avc::report {
 namespace {
 
 // A calibration whose flange is the camera and whose base is the table: a capture's reported
@@ -21,9 +21,9 @@ calibration::CellCalibration CameraIsFlange() {
   return calibration;
 }
 
-CaptureRecord CaptureAt(int index, const std::string& phase, bool kept,
-                        const Eigen::Vector3d& eye) {
-  CaptureRecord c;
+orchestrator::CaptureRecord CaptureAt(int index, const std::string& phase, bool kept,
+                                      const Eigen::Vector3d& eye) {
+  orchestrator::CaptureRecord c;
   c.index = index;
   c.phase = phase;
   c.kept = kept;
@@ -74,4 +74,4 @@ TEST(ReportCoverage, TheSectionDrawsTheCurveOrSaysWhyNot) {
 }
 
 }  // namespace
-}  // namespace avc::orchestrator::report
+}  // namespace avc::report

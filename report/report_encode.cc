@@ -1,4 +1,4 @@
-#include "orchestrator/report_encode.h"
+#include "report/report_encode.h"
 
 #include <fmt/format.h>
 
@@ -7,7 +7,7 @@
 
 #include "core/util/web_text.h"
 
-namespace avc::orchestrator::report {
+namespace avc::report {
 namespace {
 
 // Appends the value's bytes least significant first, whatever the host's order.
@@ -76,4 +76,4 @@ std::string CssColour(const std::array<uint8_t, 3>& rgb) {
   return fmt::format("#{:02x}{:02x}{:02x}", rgb[0], rgb[1], rgb[2]);
 }
 
-}  // namespace avc::orchestrator::report
+}  // namespace avc::report

@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <string>
 
-namespace avc::orchestrator {
+namespace avc::report {
 
 // The page for the scan in scan_dir. Throws std::runtime_error naming the file when report.json
 // or model/mesh.ply is missing or unreadable; other missing inputs are noted in the page.
@@ -19,4 +19,4 @@ std::string ReportHtml(const std::filesystem::path& scan_dir);
 // Writes ReportHtml(scan_dir) to scan_dir/report.html, atomically.
 void WriteReportHtml(const std::filesystem::path& scan_dir);
 
-}  // namespace avc::orchestrator
+}  // namespace avc::report

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "orchestrator/report_inputs.h"
+#include "report/report_inputs.h"
 
-namespace avc::orchestrator::report {
+namespace avc::report {
 
 // More points slow the page without showing more: a deterministic stride keeps at most this.
 inline constexpr size_t kMaxPagePoints = 50000;
@@ -22,4 +22,4 @@ std::vector<std::array<uint8_t, 3>> FaceClusterColours(const geometry::Mesh& mes
 // The JSON text, safe inside a <script type="application/json"> element.
 std::string SceneJson(const ReportInputs& inputs);
 
-}  // namespace avc::orchestrator::report
+}  // namespace avc::report

@@ -1,4 +1,4 @@
-#include "orchestrator/report_html.h"
+#include "report/report_html.h"
 
 #include <fmt/format.h>
 
@@ -6,19 +6,18 @@
 #include <stdexcept>
 
 #include "core/util/file_io.h"
-#include "orchestrator/report_assets.h"
-#include "orchestrator/report_coverage.h"
-#include "orchestrator/report_encode.h"
-#include "orchestrator/report_inputs.h"
-#include "orchestrator/report_scene.h"
-#include "orchestrator/report_sections.h"
-#include "orchestrator/report_svg.h"
+#include "report/report_assets.h"
+#include "report/report_coverage.h"
+#include "report/report_encode.h"
+#include "report/report_inputs.h"
+#include "report/report_scene.h"
+#include "report/report_sections.h"
+#include "report/report_svg.h"
 
-namespace avc::orchestrator {
+namespace avc::report {
 namespace {
 
 namespace fs = std::filesystem;
-using report::EscapeHtml;
 
 std::string ReadScript(const char* path, const char* package) {
   try {
@@ -37,35 +36,34 @@ std::string InlineScript(std::string code) {
   return "<script>\n" + code + "\n</script>\n";
 }
 
-std::string View3d(const report::ReportInputs& in) {
+std::string View3d(const ReportInputs& in) {
   std::string html =
       "<h2>3-D model</h2>\n<div class=\"toggles\">"
       "<label><input type=\"radio\" name=\"colour\" checked> colour by cluster</label>"
       "<label><input type=\"radio\" name=\"colour\" id=\"colour-by-vertex\"";
   html += in.mesh.colors.empty() ? " disabled" : "";
   html += "> by vertex colour</label>";
-  html += fmt::format(
-      "<label><input type=\"checkbox\" id=\"show-points\"{}> MVS points{}</label>",
-      in.points ? "" : " disabled",
-      in.points ? fmt::format(" ({} of {})", std::min(in.points->size(), report::kMaxPagePoints),
-                              in.points->size())
-                : "");
+  html += fmt::format("<label><input type=\"checkbox\" id=\"show-points\"{}> MVS points{}</label>",
+                      in.points ? "" : " disabled",
+                      in.points
+                          ? fmt::format(" ({} of {})", std::min(in.points->size(), kMaxPagePoints),
+                                        in.points->size())
+                          : "");
   html += fmt::format("<label><input type=\"checkbox\" id=\"show-cameras\"{}> cameras ({})</label>",
                       in.cameras.empty() ? " disabled" : "", in.cameras.size());
   html += "</div>\n<div id=\"view3d\"></div>\n<p id=\"view-status\">Loading the 3-D view…</p>\n";
-  return html + "<script type=\"application/json\" id=\"avc-data\">" + report::SceneJson(in) +
+  return html + "<script type=\"application/json\" id=\"avc-data\">" + SceneJson(in) +
          "</script>\n";
 }
 
-std::string StaticRenders(const report::ReportInputs& in) {
-  const auto colours = report::FaceClusterColours(in.mesh);
+std::string StaticRenders(const ReportInputs& in) {
+  const auto colours = FaceClusterColours(in.mesh);
   std::string html = fmt::format(
       "<h2>Static renders</h2>\n<p>The mesh ({} faces) projected orthographically, faces painted "
       "in their cluster's colour.</p>\n<div class=\"mesh-views\">\n",
       in.mesh.num_faces());
-  for (report::MeshView view :
-       {report::MeshView::kFront, report::MeshView::kSide, report::MeshView::kTop}) {
-    html += report::MeshViewSvg(in.mesh, colours, view, 360);
+  for (MeshView view : {MeshView::kFront, MeshView::kSide, MeshView::kTop}) {
+    html += MeshViewSvg(in.mesh, colours, view, 360);
   }
   return html + "</div>\n";
 }
@@ -73,30 +71,30 @@ std::string StaticRenders(const report::ReportInputs& in) {
 }  // namespace
 
 std::string ReportHtml(const fs::path& scan_dir) {
-  const report::ReportInputs in = report::LoadReportInputs(scan_dir);
+  const ReportInputs in = LoadReportInputs(scan_dir);
   const std::string id = in.report.value("scan_id", scan_dir.filename().string());
   std::string html = fmt::format(
       "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
       "<title>Scan {}</title>\n<style>\n{}</style>\n</head>\n<body>\n",
-      EscapeHtml(id), report::kPageStyle);
-  html += report::HeaderSection(in);
-  html += report::KeyFiguresSection(in);
+      EscapeHtml(id), kPageStyle);
+  html += HeaderSection(in);
+  html += KeyFiguresSection(in);
   html += View3d(in);
   html += StaticRenders(in);
-  html += report::TimingsSection(in);
-  html += report::ViewsSection(in);
-  html += report::CoverageSection(in);
-  html += report::ClustersSection(in);
-  html += report::SurfaceSection(in);
-  html += report::CalibrationSection(in);
-  html += report::PlannerSection(in);
-  html += report::ConfigurationSection(in);
-  html += report::NotesSection(in);
+  html += TimingsSection(in);
+  html += ViewsSection(in);
+  html += CoverageSection(in);
+  html += ClustersSection(in);
+  html += SurfaceSection(in);
+  html += CalibrationSection(in);
+  html += PlannerSection(in);
+  html += ConfigurationSection(in);
+  html += NotesSection(in);
   html += InlineScript(ReadScript(AVC_THREE_JS_PATH, "libjs-three"));
 #ifdef AVC_ORBIT_CONTROLS_JS_PATH
   html += InlineScript(ReadScript(AVC_ORBIT_CONTROLS_JS_PATH, "libjs-three"));
 #endif
-  html += InlineScript(report::kPageScript);
+  html += InlineScript(kPageScript);
   return html + "</body>\n</html>\n";
 }
 
@@ -104,4 +102,4 @@ void WriteReportHtml(const fs::path& scan_dir) {
   WriteFileAtomically(scan_dir / "report.html", ReportHtml(scan_dir));
 }
 
-}  // namespace avc::orchestrator
+}  // namespace avc::report

@@ -5,9 +5,9 @@
 
 #include <string>
 
-#include "orchestrator/report_inputs.h"
+#include "report/report_inputs.h"
 
-namespace avc::orchestrator::report {
+namespace avc::report {
 
 std::string HeaderSection(const ReportInputs& in);      // id, date, state, images
 std::string KeyFiguresSection(const ReportInputs& in);  // traits; ground-truth scores if any
@@ -20,4 +20,4 @@ std::string PlannerSection(const ReportInputs& in);
 std::string ConfigurationSection(const ReportInputs& in);  // what each stage ran with
 std::string NotesSection(const ReportInputs& in);          // inputs left out
 
-}  // namespace avc::orchestrator::report
+}  // namespace avc::report
