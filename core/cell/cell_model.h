@@ -6,9 +6,10 @@
 // the simulator's truth (sim::CellTruth) is a model whose values it chose and hides from the
 // drivers and the calibrator, which must recover them.
 //
-// Frames (DESIGN.md): table is fixed, z up, origin at the centre of the turntable top; world is
-// the plant frame riding on the turntable, equal to table at turntable angle 0; base is the UR
-// controller's base frame; flange the tool flange; cam the OpenCV camera frame.
+// Frames (T_a_b maps coordinates in frame b to frame a): table is fixed, z up, origin at the centre
+// of the turntable top; world is the plant frame riding on the turntable, equal to table at
+// turntable angle 0; base is the UR controller's base frame; flange the tool flange; cam the OpenCV
+// camera frame.
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>

@@ -47,7 +47,8 @@ Eigen::Isometry3d ProductOfExponentialsUr5(const JointVector& q) {
 
 TEST(ForwardKinematics, ZeroPoseMatchesPublishedVector) {
   const Eigen::Isometry3d flange = ForwardKinematics(NominalUr5(), JointVector::Zero());
-  // hardware.md 1.6: p = (a2 + a3, -(d4 + d6), d1 - d5), rotation vector (pi/2, 0, 0).
+  // Universal Robots' published UR5 (CB3) DH parameters: p = (a2 + a3, -(d4 + d6), d1 - d5),
+  // rotation vector (pi/2, 0, 0).
   EXPECT_NEAR(flange.translation().x(), -0.81725, 1e-12);
   EXPECT_NEAR(flange.translation().y(), -0.19145, 1e-12);
   EXPECT_NEAR(flange.translation().z(), 0.089159 - 0.09465, 1e-12);

@@ -1,6 +1,6 @@
 #pragma once
 
-// Synthetic robot-world/hand-eye data like the real cell's (docs calibration.md 8): a 9x6-corner,
+// Synthetic robot-world/hand-eye data like the real cell's (as in BENCHMARKS.md): a 9x6-corner,
 // 25 mm checkerboard lying on the turntable; the arm of a perturbed sim cell (true hand-eye and
 // base placement differ per seed) puts the camera 0.4-0.8 m from it, looking down from 30-75 deg
 // elevation within +-60 deg of the robot's side, rolled +-30 deg about the optical axis. Every

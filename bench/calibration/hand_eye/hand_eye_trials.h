@@ -39,8 +39,8 @@ struct HandEyeTrialOptions {
 
 // The cases of the benchmark, 10 poses and 200 trials each, fixed seeds, the cell's 1280x960
 // camera (fx 1500 px): noise-free, and 0.5 px corner noise with 0.005 deg / 0.05 mm robot noise.
-// The third repeats the noisy case with calibration.md 4's setup (5184x3456, fx 4186 px, 30 mm
-// squares, 0.35-0.6 m), where the acceptance targets come from.
+// The third repeats the noisy case with a Canon 650D-like setup (5184x3456, fx 4186 px, 30 mm
+// squares, 0.35-0.6 m), the camera the acceptance targets were set for.
 HandEyeTrialOptions NoiseFreeHandEyeCase();
 HandEyeTrialOptions NoisyHandEyeCase();
 HandEyeTrialOptions HighResolutionHandEyeCase();

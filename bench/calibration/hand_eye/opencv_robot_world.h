@@ -1,7 +1,7 @@
 #pragma once
 
 // The baseline: OpenCV 4.6's cv::calibrateRobotWorldHandEye with CALIB_ROBOT_WORLD_HAND_EYE_SHAH
-// on the same observations. Its convention is ours (docs calibration.md 1, 3): world2cam = A_i =
+// on the same observations. Its convention is ours (robot_world_hand_eye.h): world2cam = A_i =
 // T_cam_board, base2gripper = B_i = T_flange_base (the robot pose inverted), and it returns
 // base2world = X = T_board_base and gripper2cam = Z = T_cam_flange.
 

@@ -6,7 +6,7 @@
 // apriltag-data.txt with the tag's side ("size: 0.048 m").
 // For the eye-to-hand set (a fixed camera, the tag on the flange) the roles of our AX = ZB swap:
 // EyeToHandObservations gives the solver the inverted robot poses in the T_base_flange slot, so
-// its T_cam_flange is T_cam_base and its T_board_base is T_tag_flange (docs calibration.md).
+// its T_cam_flange is T_cam_base and its T_board_base is T_tag_flange (robot_world_hand_eye.h).
 
 #include <Eigen/Geometry>
 #include <filesystem>

@@ -1,6 +1,6 @@
 #pragma once
 
-// k-means baseline on point positions (algorithms.md §3.2): needs K and cuts leaves arbitrarily.
+// k-means baseline on point positions (the paper's Table 2): needs K and cuts leaves arbitrarily.
 
 #include <cstdint>
 

@@ -12,7 +12,7 @@
 namespace avc::cluster::baselines {
 
 struct RegionGrowingOptions {
-  double smoothness_degrees = 10.0;  // algorithms.md §3.2 measured 8-15 degrees as good
+  double smoothness_degrees = 10.0;  // 8-15 degrees split non-touching synthetic leaves cleanly
   // Members above this curvature join a region but do not extend it; <= 0: the
   // curvature_quantile of the set's curvatures (derived from data).
   double curvature_threshold = 0.0;

@@ -2,7 +2,7 @@
 
 // Baseline: greedy projection triangulation (Marton et al. 2009,
 // pcl::GreedyProjectionTriangulation): fast and interpolating, leaves holes where the sampling is
-// sparse (algorithms.md §4.3).
+// sparse (BENCHMARKS.md, surface).
 
 #include "core/geometry/mesh.h"
 #include "core/geometry/point_cloud.h"
@@ -13,7 +13,7 @@ struct GreedyProjectionOptions {
   double spacing = 0;  // m; <= 0: measured (median nearest-neighbour distance)
   // Neighbourhood radius in spacings (median nearest-neighbour distances h). On a random
   // sampling of density rho, h = 0.47 / sqrt(rho) while the mean distance between neighbours
-  // (the h of algorithms.md §4.3, whose measured best radius was 3 of those) is about 1 /
+  // (an earlier trial on synthetic leaves found 3 of those the best radius) is about 1 /
   // sqrt(rho) = 2.1 h: 6 h. Measured on a 2000-point cylinder sheet: area 0.15 at 3 h, 0.56 at
   // 5 h, 0.68 at 6 h, 0.71-0.76 at 8 h (where it starts bridging gaps).
   double radius_factor = 6.0;

@@ -18,7 +18,7 @@ struct PoissonOptions {
   int depth = 0;
   // Drop faces farther than this many spacings from the data: the surface between two
   // neighbouring samples is at most about one spacing away, so 2 keeps the sampled sheet and
-  // cuts the far side of the blob (measured with max(2h, 1 mm) in algorithms.md §4.3).
+  // cuts the far side of the blob (BENCHMARKS.md, surface, measures it trimmed at 2 h).
   double trim_factor = 2.0;
 };
 

@@ -1,7 +1,7 @@
 #pragma once
 
 // Baseline: Pound et al. 2014's canopy reconstruction as the paper compares with (Table 4;
-// algorithms.md §4.5), without its image term: the points are cut into patches of a fixed
+// Plant Physiology 166:1688), without its image term: the points are cut into patches of a fixed
 // radius (the input's clusters are ignored), each patch is a planar section (its points
 // projected onto their regression plane and triangulated there), its outline grows in that
 // plane until it nears another patch, and patches are never merged: a set of flat pieces with

@@ -1,10 +1,11 @@
 #pragma once
 
-// The sign fix that makes Dornaika & Horaud's quaternion closed form reliable
-// (docs calibration.md 2.1). Its objective sum |a_i (x) x - z (x) b_i|^2 changes when one a_i or
-// b_i flips sign, and rotation-to-quaternion conversions return either sign. Relative motions are
-// conjugate, A_j A_r^-1 = Z (B_j B_r^-1) Z^-1, so scalar(a_j (x) a_r*) = scalar(b_j (x) b_r*)
-// exactly when the signs agree: b_j is flipped until they do.
+// The sign fix that makes Dornaika & Horaud's quaternion closed form reliable (OpenCV's Horaud
+// and Daniilidis hand-eye needed the same fix, opencv/opencv#24897). Its objective
+// sum |a_i (x) x - z (x) b_i|^2 changes when one a_i or b_i flips sign, and rotation-to-quaternion
+// conversions return either sign. Relative motions are conjugate, A_j A_r^-1 = Z (B_j B_r^-1) Z^-1,
+// so scalar(a_j (x) a_r*) = scalar(b_j (x) b_r*) exactly when the signs agree: b_j is flipped
+// until they do.
 
 #include <vector>
 

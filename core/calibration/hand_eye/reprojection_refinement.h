@@ -1,16 +1,16 @@
 #pragma once
 
 // Joint refinement of robot-world and hand-eye (X = T_board_base, Z = T_cam_flange) on the
-// checkerboard reprojection error of every corner in every view (docs calibration.md 2.2): corner
-// P_k of view i images at pi(K, dist, Z * T_base_flange,i^-1 * X^-1 * P_k). Intrinsics are fixed;
-// rotations live on Ceres' EigenQuaternionManifold. Starting point: the closed form.
+// checkerboard reprojection error of every corner in every view (as Tabb & Ahmad Yousef 2017):
+// corner P_k of view i images at pi(K, dist, Z * T_base_flange,i^-1 * X^-1 * P_k). Intrinsics are
+// fixed; rotations live on Ceres' EigenQuaternionManifold. Starting point: the closed form.
 //
 // The reported robot poses are not exact either. Taking them as exact lets their small errors
 // steer the solution along the directions a narrow-angle camera measures poorly (a camera that
 // orbits the board barely changes its image), which made the plain reprojection fit 8x worse than
 // the closed form with robot noise alone (hand-eye 0.041 vs 0.005 deg median, 1280x960 camera;
-// 0.018 deg with the corrections below) and no better than it on calibration.md 4's 18 MP setup
-// (0.040 vs 0.035 deg; 0.019 deg with corrections). So each view also
+// 0.018 deg with the corrections below) and no better than it on BENCHMARKS.md's 650D-like 18 MP
+// setup (0.040 vs 0.035 deg; 0.019 deg with corrections). So each view also
 // gets a small correction of its robot pose (rotation vector and translation in `base`,
 // T_base_flange,true = [Exp(w) R | t + tau]) held by a Gaussian prior of the robot's noise: the
 // cost is the negative log-likelihood of pixels and robot poses together, scaled to pixels^2.

@@ -1,7 +1,7 @@
 #pragma once
 
 // Robot-world/hand-eye calibration in closed form (Dornaika & Horaud 1998), in the convention of
-// docs calibration.md 1 (the same as OpenCV's calibrateRobotWorldHandEye):
+// OpenCV's calibrateRobotWorldHandEye (T_a_b maps coordinates in frame b to frame a):
 //
 //   A_i X = Z B_i   with  A_i = T_cam_board,i  (board pose seen by the camera, e.g. solvePnP),
 //                         B_i = T_flange_base,i = T_base_flange,i^-1  (robot pose, inverted),

@@ -1,8 +1,8 @@
 #pragma once
 
-// The whole calibration from a dataset (paper §2.1, docs calibration.md): find the board in every
-// image, intrinsics from all views, robot-world/hand-eye from the hand-eye shots (closed form,
-// then refined on the reprojection of every corner), the turntable axis from the turntable
+// The whole calibration from a dataset (paper §2.1; README.md, Calibration): find the board in
+// every image, intrinsics from all views, robot-world/hand-eye from the hand-eye shots (closed
+// form, then refined on the reprojection of every corner), the turntable axis from the turntable
 // shots (board poses carried into the base frame through the hand-eye), and the table frame.
 // A dataset with no turntable shots gives a hand-eye-only calibration (turntable_calibrated
 // false).

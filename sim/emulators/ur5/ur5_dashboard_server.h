@@ -1,7 +1,8 @@
 #pragma once
 
 // The emulated controller's dashboard server (29999): the banner on connect, then one reply line
-// per command line (hardware.md 1.4), acting on the controller's robot-mode state machine.
+// per command line (as Universal Robots' dashboard server manual gives them), acting on the
+// controller's robot-mode state machine.
 
 #include <string>
 

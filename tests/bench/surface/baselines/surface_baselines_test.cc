@@ -34,7 +34,7 @@ struct Baseline {
   double max_offset;  // m: farthest vertex from the disc's plane
 };
 
-// Expected ranges from algorithms.md §4.3/4.4 on open sheets: the interpolating meshers leave
+// Expected ranges on open sheets (cf. BENCHMARKS.md, surface): the interpolating meshers leave
 // holes and the disc's rim (below 1), trimmed Poisson over-extends past the rim (above 1), the
 // patches leave gaps between them (and grow by the surfacer's band, which on a random disc
 // closes a little less than the missing rim: boundary_growth.h kRandomSamplingExtraBand).
