@@ -62,36 +62,100 @@ function(avc_add_executable)
   set_target_properties(${ARG_NAME} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR}/bin)
 endfunction()
 
-# avc_add_test(NAME <name> LABEL unit|bus|replay|multiproc SRCS ... [DEPS ...] [TIMEOUT s])
-# Registers "<label>/<name>" with ctest. multiproc tests run inside a private network namespace
-# (tests/support/in_netns) and hold a resource lock so two heavy ones never share the 2 cores.
+# The gtest names a test source defines, as a --gtest_filter pattern list ("Suite.Name:...";
+# TEST_P as "*/Suite.Name/*"), in `out`. Fails for a source with no test.
+function(_avc_test_filter out)
+  set(patterns "")
+  set(space "[ \t\r\n]*")
+  set(word "[A-Za-z0-9_]+")
+  foreach(src IN LISTS ARGN)
+    get_filename_component(path ${src} ABSOLUTE)
+    file(READ ${path} text)
+    string(REGEX MATCHALL "TEST(_F|_P)?\\(${space}${word}${space},${space}${word}${space}\\)" found
+           "${text}")
+    foreach(test IN LISTS found)
+      string(REGEX REPLACE "[ \t\r\n]" "" test "${test}")
+      string(REGEX MATCH "^TEST(_F|_P)?\\((${word}),(${word})\\)$" parts "${test}")
+      if(CMAKE_MATCH_1 STREQUAL "_P")
+        list(APPEND patterns "*/${CMAKE_MATCH_2}.${CMAKE_MATCH_3}/*")
+      else()
+        list(APPEND patterns "${CMAKE_MATCH_2}.${CMAKE_MATCH_3}")
+      endif()
+    endforeach()
+  endforeach()
+  if(NOT patterns)
+    message(FATAL_ERROR "${CMAKE_CURRENT_SOURCE_DIR}: no TEST in ${ARGN}")
+  endif()
+  string(REPLACE ";" ":" filter "${patterns}")
+  set(${out} "${filter}" PARENT_SCOPE)
+endfunction()
+
+# avc_add_test(NAME <name> LABEL unit|bus|replay|multiproc SRCS ... [DEPS ...] [TIMEOUT s]
+#              [USES_AVC])
+# Registers "<folder>/<name>" with ctest, where <folder> is the test's folder under tests/ (which
+# mirrors the sources), so `ctest -R ^core/bus/` selects a module and `-L LABEL` a kind.
+# The tests of one folder and label are one executable (test_<label>_<folder>), compiled in
+# unity batches like the libraries: each ctest entry runs it with a gtest filter naming the
+# tests its own sources define (two sources may not define the same test). multiproc tests run
+# inside a private network namespace (tests/support/in_netns) and hold a resource lock so two
+# heavy ones never share the 2 cores. USES_AVC: the test runs build/bin/avc, built first.
 function(avc_add_test)
-  cmake_parse_arguments(ARG "" "NAME;LABEL;TIMEOUT" "SRCS;DEPS" ${ARGN})
+  cmake_parse_arguments(ARG "USES_AVC" "NAME;LABEL;TIMEOUT" "SRCS;DEPS" ${ARGN})
   set(allowed unit bus replay multiproc)
   if(NOT ARG_LABEL IN_LIST allowed)
     message(FATAL_ERROR "avc_add_test(${ARG_NAME}): LABEL must be one of ${allowed}")
   endif()
-  set(target test_${ARG_LABEL}_${ARG_NAME})
-  add_executable(${target} ${ARG_SRCS})
-  _avc_policy(${target})
-  target_compile_options(${target} PRIVATE ${AVC_GLUE_OPTIMIZATION})
-  target_link_libraries(${target} PRIVATE ${ARG_DEPS} avc_test_support GTest::gtest_main)
-  # gtest, Eigen, OpenCV core, json and the standard library parsed once (tests/support).
-  if(TARGET avc_test_pch)
-    target_precompile_headers(${target} REUSE_FROM avc_test_pch)
+  file(RELATIVE_PATH folder ${PROJECT_SOURCE_DIR}/tests ${CMAKE_CURRENT_SOURCE_DIR})
+  string(REPLACE "/" "_" flat "${folder}")
+  set(target test_${ARG_LABEL}_${flat})
+  if(NOT TARGET ${target})
+    add_executable(${target})
+    _avc_policy(${target})
+    target_compile_options(${target} PRIVATE ${AVC_GLUE_OPTIMIZATION})
+    target_link_libraries(${target} PRIVATE avc_test_support GTest::gtest_main)
+    # gtest, Eigen, OpenCV core, json and the standard library parsed once (tests/support).
+    if(TARGET avc_test_pch)
+      target_precompile_headers(${target} REUSE_FROM avc_test_pch)
+    endif()
+    set_target_properties(${target} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR}/tests)
   endif()
-  set_target_properties(${target} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR}/tests)
+  target_sources(${target} PRIVATE ${ARG_SRCS})
+  target_link_libraries(${target} PRIVATE ${ARG_DEPS})
+  if(ARG_USES_AVC)
+    add_dependencies(${target} avc)
+  endif()
+  # Only the sources that define tests name them; helpers shared by several tests of the folder
+  # are compiled once.
+  set(test_sources "")
+  foreach(src IN LISTS ARG_SRCS)
+    if(src MATCHES "_test\\.cc$")
+      list(APPEND test_sources ${src})
+    endif()
+  endforeach()
+  _avc_test_filter(filter ${test_sources})
+  get_property(defined TARGET ${target} PROPERTY AVC_DEFINED_TESTS)
+  string(REPLACE ":" ";" mine "${filter}")
+  foreach(test IN LISTS mine)
+    if(test IN_LIST defined)
+      message(FATAL_ERROR "${folder}: ${test} is defined by two tests of ${target}")
+    endif()
+  endforeach()
+  set_property(TARGET ${target} APPEND PROPERTY AVC_DEFINED_TESTS ${mine})
   if(NOT ARG_TIMEOUT)
     set(ARG_TIMEOUT 60)
   endif()
+  # core/surface's "surface_phases" is core/surface/phases.
+  get_filename_component(leaf ${folder} NAME)
+  string(REGEX REPLACE "^${leaf}_(.)" "\\1" short ${ARG_NAME})
+  set(name ${folder}/${short})
   if(ARG_LABEL STREQUAL "multiproc")
-    add_test(NAME ${ARG_LABEL}/${ARG_NAME}
-             COMMAND ${PROJECT_SOURCE_DIR}/tests/support/in_netns $<TARGET_FILE:${target}>)
-    set_tests_properties(${ARG_LABEL}/${ARG_NAME} PROPERTIES RESOURCE_LOCK multiproc)
+    add_test(NAME ${name} COMMAND ${PROJECT_SOURCE_DIR}/tests/support/in_netns
+                                  $<TARGET_FILE:${target}> --gtest_filter=${filter})
+    set_tests_properties(${name} PROPERTIES RESOURCE_LOCK multiproc)
   else()
-    add_test(NAME ${ARG_LABEL}/${ARG_NAME} COMMAND ${target})
+    add_test(NAME ${name} COMMAND ${target} --gtest_filter=${filter})
   endif()
-  set_tests_properties(${ARG_LABEL}/${ARG_NAME} PROPERTIES
+  set_tests_properties(${name} PROPERTIES
     LABELS ${ARG_LABEL} TIMEOUT ${ARG_TIMEOUT}
     ENVIRONMENT "AVC_BUILD_DIR=${PROJECT_BINARY_DIR};AVC_SOURCE_DIR=${PROJECT_SOURCE_DIR}")
 endfunction()

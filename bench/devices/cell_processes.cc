@@ -36,7 +36,7 @@ namespace {
 bool CanListenOn(int port) {
   // Close-on-exec: cells start their processes from several threads at once, and a probe socket
   // inherited by another thread's child stays bound in it, so the cell given that port could not
-  // listen on it ("Address already in use", multiproc/chaos once in CI).
+  // listen on it ("Address already in use", bench/chaos once in CI).
   const int fd = socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
   if (fd < 0) throw std::runtime_error("cannot create a socket to find a free port");
   sockaddr_in address{};

@@ -16,7 +16,7 @@
 #include "core/eval/metrics.h"
 #include "core/surface/surface_reconstruction.h"
 #include "core/traits/plant_traits.h"
-#include "tests/surface/surface_test_points.h"  // the plant test's leaf sampling, reused
+#include "tests/core/surface/surface_test_points.h"  // the plant test's leaf sampling, reused
 
 namespace avc::bench {
 namespace {

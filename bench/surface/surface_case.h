@@ -1,7 +1,7 @@
 #pragma once
 
 // One plant of `avc bench surface`: ~3000 labelled leaf points sampled on a simulated plant
-// (as tests/surface/plant_surface_test.cc does), surfaced by ours (with one cluster per leaf
+// (as tests/core/surface/plant_surface_test.cc does), surfaced by ours (with one cluster per leaf
 // and with the paper's Algorithm 2 clusters) and by every baseline on the same points, each
 // scored against the leaves' one-sided ground truth.
 

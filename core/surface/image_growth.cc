@@ -254,7 +254,7 @@ ImageGrowthStats GrowCellWithImages(Cell& cell, const std::vector<Eigen::Vector3
   for (size_t node : new_nodes) {
     // Where the lift put the node, not its grid centre: the fitted surface moves a node along
     // its local normal, so within the plane too, and neighbours that crossed over each other
-    // made faces folded back on the leaf (tests/surface/image_growth_test.cc).
+    // made faces folded back on the leaf (tests/core/surface/image_growth_test.cc).
     flat.push_back(cell.plane.Project(judge.Lifted(node).cast<float>()));
     lifted.push_back(judge.Lifted(node));
   }

@@ -33,7 +33,7 @@ namespace {
 namespace fs = std::filesystem;
 using std::chrono::milliseconds;
 
-constexpr int kWidth = 320, kHeight = 240;
+constexpr int kCaptureWidth = 320, kCaptureHeight = 240;
 
 // Views around the plant at one height, as the planner realises them in the nominal cell.
 std::vector<plan::ViewRequest> ViewsAround(const sim::CellTruth& model, int count) {
@@ -65,15 +65,15 @@ TEST(ScanCaptureMultiproc, KeepsEveryImageAndResumesWithoutCapturingAgain) {
       bench::CellOptionsOnBus(bus_options, testing::Executable("avc"), dir.path());
   options.time_scale = 10;
   options.triangles = 6000;
-  options.width = kWidth;
-  options.height = kHeight;
+  options.width = kCaptureWidth;
+  options.height = kCaptureHeight;
   options.png = true;
   options.stages = false;  // captures only
   bench::CellProcesses cell(options);
 
   sim::RenderDatasetOptions model_options;
-  model_options.width = kWidth;
-  model_options.height = kHeight;
+  model_options.width = kCaptureWidth;
+  model_options.height = kCaptureHeight;
   const sim::CellTruth model = sim::MakeCell(model_options);
   const std::vector<plan::ViewRequest> views = ViewsAround(model, 4);
 
@@ -107,8 +107,8 @@ TEST(ScanCaptureMultiproc, KeepsEveryImageAndResumesWithoutCapturingAgain) {
         if (n == 2) cell.KillAndRestart("avc-camera");
         const std::optional<cv::Mat> mask = capture(views[n]);
         ASSERT_TRUE(mask.has_value());
-        EXPECT_EQ(mask->cols, kWidth);
-        EXPECT_GT(PlantPixels(mask), 0.01 * kWidth * kHeight) << "view " << n;
+        EXPECT_EQ(mask->cols, kCaptureWidth);
+        EXPECT_GT(PlantPixels(mask), 0.01 * kCaptureWidth * kCaptureHeight) << "view " << n;
         first_masks.push_back(*mask);
       }
       EXPECT_EQ(capture.taken(), 3);
@@ -179,8 +179,8 @@ TEST(ScanCaptureMultiproc, KeepsEveryImageAndResumesWithoutCapturingAgain) {
     // A calibration of another camera (640x480 where the cell's camera gives 320x240): the first
     // capture stops the scan saying what to do, and nothing is added to the record or the disk.
     sim::RenderDatasetOptions other_options = model_options;
-    other_options.width = 2 * kWidth;
-    other_options.height = 2 * kHeight;
+    other_options.width = 2 * kCaptureWidth;
+    other_options.height = 2 * kCaptureHeight;
     const plan::ViewRequest other_camera = ViewsAround(sim::MakeCell(other_options), 4)[0];
     ScanRecord fresh;
     const fs::path other_dir = dir.path() / "other-camera";

@@ -100,7 +100,7 @@ TEST(ScanOptions, AScansConfigurationReadsBackToItself) {
   const ScanOptions options = Apply({"planner.max_views=20", "envelope.table_z=-0.1",
                                      "capture.encoding=jpeg", "capture.pose_tolerance=0.001"});
   const std::string text = ScanOptionTable().ToToml(options);
-  const auto file = std::filesystem::path(testing::TempDir()) / "avc-scan.toml";
+  const auto file = std::filesystem::path(::testing::TempDir()) / "avc-scan.toml";
   std::ofstream(file) << text;
   const ScanOptions read = ScanOptionTable().Load(ScanOptions{}, {file.string()}, {});
   EXPECT_EQ(ScanOptionTable().ToToml(read), text);

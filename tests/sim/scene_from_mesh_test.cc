@@ -24,7 +24,7 @@ namespace labels = geometry::labels;
 std::filesystem::path SharedData() { return avc::testing::SharedDataDir(); }
 
 // An axis-aligned box (closed, 12 triangles) off-centre, in millimetres.
-geometry::Mesh Box(const Eigen::Vector3f& min, const Eigen::Vector3f& max) {
+geometry::Mesh BoxMesh(const Eigen::Vector3f& min, const Eigen::Vector3f& max) {
   geometry::Mesh mesh;
   for (int i = 0; i < 8; ++i) {
     mesh.vertices.emplace_back(i & 1 ? max.x() : min.x(), i & 2 ? max.y() : min.y(),
@@ -56,7 +56,7 @@ void PlacedBounds(const Scene& scene, Eigen::Vector3f* min, Eigen::Vector3f* max
 TEST(SceneFromMesh, FitsTheTargetHeightOnTheSoilOnTheAxis) {
   MeshPlacement placement;
   placement.target_height = 0.2;
-  const Scene scene = SceneFromMesh(Box({100, 50, 30}, {140, 60, 530}), placement);
+  const Scene scene = SceneFromMesh(BoxMesh({100, 50, 30}, {140, 60, 530}), placement);
   EXPECT_EQ(scene.mesh.Validate(), "");
   Eigen::Vector3f min, max;
   PlacedBounds(scene, &min, &max);
@@ -84,7 +84,7 @@ TEST(SceneFromMesh, ExplicitScaleWithoutPotRestsOnTheTurntable) {
   placement.scale = 0.001;
   placement.with_pot = false;
   placement.label = labels::kStem;
-  const Scene scene = SceneFromMesh(Box({-10, -10, -40}, {10, 10, 140}), placement);
+  const Scene scene = SceneFromMesh(BoxMesh({-10, -10, -40}, {10, 10, 140}), placement);
   Eigen::Vector3f min, max;
   geometry::Bounds(scene.mesh, &min, &max);
   EXPECT_NEAR(min.z(), 0.0f, 1e-7f);
@@ -119,7 +119,7 @@ TEST(SceneFromMesh, YUpMeshesAreTurnedUpright) {
   placement.with_pot = false;
   placement.y_up = true;
   // 20 mm wide, 300 mm tall along +y, 40 mm deep.
-  const Scene scene = SceneFromMesh(Box({0, 0, 0}, {20, 300, 40}), placement);
+  const Scene scene = SceneFromMesh(BoxMesh({0, 0, 0}, {20, 300, 40}), placement);
   Eigen::Vector3f min, max;
   geometry::Bounds(scene.mesh, &min, &max);
   EXPECT_NEAR(max.z() - min.z(), 0.3f, 1e-6f);
@@ -133,14 +133,14 @@ TEST(SceneFromMesh, BadInputIsRejected) {
   EXPECT_THROW(SceneFromMesh(geometry::Mesh{}), std::invalid_argument);
   MeshPlacement negative;
   negative.scale = -1;
-  EXPECT_THROW(SceneFromMesh(Box({0, 0, 0}, {1, 1, 1}), negative), std::invalid_argument);
+  EXPECT_THROW(SceneFromMesh(BoxMesh({0, 0, 0}, {1, 1, 1}), negative), std::invalid_argument);
   MeshPlacement no_height;
   no_height.target_height = 0;
-  EXPECT_THROW(SceneFromMesh(Box({0, 0, 0}, {1, 1, 1}), no_height), std::invalid_argument);
-  geometry::Mesh broken = Box({0, 0, 0}, {1, 1, 1});
+  EXPECT_THROW(SceneFromMesh(BoxMesh({0, 0, 0}, {1, 1, 1}), no_height), std::invalid_argument);
+  geometry::Mesh broken = BoxMesh({0, 0, 0}, {1, 1, 1});
   broken.faces[3] = Eigen::Vector3i(0, 1, 8);
   EXPECT_THROW(SceneFromMesh(broken), std::invalid_argument);
-  geometry::Mesh flat = Box({0, 0, 0}, {1, 1, 0});
+  geometry::Mesh flat = BoxMesh({0, 0, 0}, {1, 1, 0});
   EXPECT_THROW(SceneFromMesh(flat), std::invalid_argument);
 }
 

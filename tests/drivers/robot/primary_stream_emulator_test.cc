@@ -18,6 +18,7 @@
 #include "sim/cell/perturbation.h"
 #include "sim/emulators/clock/emulator_clock.h"
 #include "sim/emulators/ur5/ur5_emulator.h"
+#include "tests/drivers/robot/emulator_test_settings.h"
 
 namespace avc {
 namespace {
@@ -25,16 +26,13 @@ namespace {
 using net::Milliseconds;
 namespace primary = robot::primary;
 
-constexpr double kNoise = 1e-5;
-const std::string kHost = "127.0.0.1";
-
 class PrimaryStreamTest : public ::testing::Test {
  protected:
   void SetUp() override {
     options_.cell = sim::PerturbedCell(31);
     options_.rtde_port = options_.primary_port = options_.secondary_port = 0;
     options_.dashboard_port = 0;
-    options_.encoder_noise_rad = kNoise;
+    options_.encoder_noise_rad = testing::kEncoderNoise;
     emulator_ = std::make_unique<sim::ur5::Ur5Emulator>(
         options_, std::make_shared<sim::ScaledEmulatorClock>(10));
   }
@@ -58,7 +56,7 @@ class PrimaryStreamTest : public ::testing::Test {
   void ExpectJointsMatchTruth(const primary::JointData& joints) {
     const auto truth = emulator_->Snapshot().true_q;
     for (int i = 0; i < 6; ++i) {
-      EXPECT_NEAR(joints.q_actual[i], truth[i], kNoise * 1.01) << "joint " << i + 1;
+      EXPECT_NEAR(joints.q_actual[i], truth[i], testing::kEncoderNoise * 1.01) << "joint " << i + 1;
     }
   }
 
@@ -68,7 +66,7 @@ class PrimaryStreamTest : public ::testing::Test {
 
 TEST_F(PrimaryStreamTest, BothPortsAnnounceVersionAndStreamTheStateOfAPoweredOffArm) {
   for (const uint16_t port : {emulator_->primary_port(), emulator_->secondary_port()}) {
-    robot::ScriptClient client(kHost, port);
+    robot::ScriptClient client(testing::kEmulatorHost, port);
     ASSERT_TRUE(PollUntil(client, [&] { return client.joint_data() && client.version(); }));
     EXPECT_EQ(client.version()->project_name, "URControl");
     const auto& mode = *client.robot_mode_data();
@@ -87,7 +85,7 @@ TEST_F(PrimaryStreamTest, BothPortsAnnounceVersionAndStreamTheStateOfAPoweredOff
 }
 
 TEST_F(PrimaryStreamTest, StateComesAtTenHertzOfControllerTime) {
-  robot::ScriptClient client(kHost, emulator_->secondary_port());
+  robot::ScriptClient client(testing::kEmulatorHost, emulator_->secondary_port());
   ASSERT_TRUE(PollUntil(client, [&] { return client.robot_mode_data().has_value(); }));
   const int first_count = client.robot_states_received();
   const uint64_t first_us = client.robot_mode_data()->timestamp_us;
@@ -99,10 +97,10 @@ TEST_F(PrimaryStreamTest, StateComesAtTenHertzOfControllerTime) {
 }
 
 TEST_F(PrimaryStreamTest, MoveSentOnThePrimaryPortShowsInModeJointAndCartesianData) {
-  robot::DashboardClient dashboard(kHost, emulator_->dashboard_port());
+  robot::DashboardClient dashboard(testing::kEmulatorHost, emulator_->dashboard_port());
   dashboard.PowerOn();
   dashboard.BrakeRelease();
-  robot::ScriptClient client(kHost, emulator_->primary_port());
+  robot::ScriptClient client(testing::kEmulatorHost, emulator_->primary_port());
   ASSERT_TRUE(PollUntil(client, [&] {
     return client.robot_mode_data() &&
            client.robot_mode_data()->robot_mode == static_cast<int8_t>(robot::RobotMode::kRunning);

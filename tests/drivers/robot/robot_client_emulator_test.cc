@@ -16,6 +16,7 @@
 #include "drivers/robot/urscript.h"
 #include "sim/cell/perturbation.h"
 #include "sim/emulators/ur5/ur5_emulator.h"
+#include "tests/drivers/robot/emulator_test_settings.h"
 
 namespace avc {
 namespace {
@@ -26,9 +27,6 @@ using robot::MotionStatus;
 using robot::RobotMode;
 using robot::SafetyMode;
 
-constexpr double kNoise = 1e-5;
-const std::string kHost = "127.0.0.1";
-
 sim::ur5::Ur5EmulatorOptions TestOptions() {
   sim::ur5::Ur5EmulatorOptions options;
   options.cell = sim::PerturbedCell(11);
@@ -36,7 +34,7 @@ sim::ur5::Ur5EmulatorOptions TestOptions() {
   options.primary_port = 0;
   options.secondary_port = 0;
   options.dashboard_port = 0;
-  options.encoder_noise_rad = kNoise;
+  options.encoder_noise_rad = testing::kEncoderNoise;
   options.seed = 5;
   return options;
 }
@@ -65,14 +63,14 @@ class RobotClientEmulatorTest : public ::testing::Test {
   void SetUp() override { emulator_ = StartEmulator(TestOptions()); }
 
   robot::RtdeClient StreamingClient() {
-    robot::RtdeClient client(kHost, emulator_->rtde_port());
+    robot::RtdeClient client(testing::kEmulatorHost, emulator_->rtde_port());
     client.Handshake();
     return client;
   }
 
   // Dashboard sequence that makes the robot ready: POWER_OFF -> IDLE -> RUNNING.
   void PowerUp() {
-    robot::DashboardClient dashboard(kHost, emulator_->dashboard_port());
+    robot::DashboardClient dashboard(testing::kEmulatorHost, emulator_->dashboard_port());
     dashboard.PowerOn();
     dashboard.BrakeRelease();
   }
@@ -81,7 +79,7 @@ class RobotClientEmulatorTest : public ::testing::Test {
 };
 
 TEST_F(RobotClientEmulatorTest, NegotiatesVersion2AndReadsTheCb3Version) {
-  robot::RtdeClient client(kHost, emulator_->rtde_port());
+  robot::RtdeClient client(testing::kEmulatorHost, emulator_->rtde_port());
   EXPECT_EQ(client.NegotiateProtocol(), 2);
   const auto version = client.GetControllerVersion();
   EXPECT_EQ(version.major, 3u);
@@ -93,7 +91,7 @@ TEST(RobotClientEmulator, FallsBackToVersion1OnAnOldController) {
   auto options = TestOptions();
   options.max_protocol_version = 1;
   auto emulator = StartEmulator(options);
-  robot::RtdeClient client(kHost, emulator->rtde_port());
+  robot::RtdeClient client(testing::kEmulatorHost, emulator->rtde_port());
   client.Handshake();
   EXPECT_EQ(client.protocol_version(), 1);
   const auto sample = client.Receive(net::Milliseconds(2000));
@@ -106,7 +104,7 @@ TEST(RobotClientEmulator, SteppedClockGivesExactControllerTimestamps) {
   // package timestamps sit exactly on the 8 ms control grid.
   auto clock = std::make_shared<sim::SteppedEmulatorClock>(0.001);
   sim::ur5::Ur5Emulator emulator(TestOptions(), clock);
-  robot::RtdeClient client(kHost, emulator.rtde_port());
+  robot::RtdeClient client(testing::kEmulatorHost, emulator.rtde_port());
   client.Handshake();
   auto previous = client.Receive(net::Milliseconds(2000));
   ASSERT_TRUE(previous);
@@ -120,7 +118,7 @@ TEST(RobotClientEmulator, SteppedClockGivesExactControllerTimestamps) {
 }
 
 TEST_F(RobotClientEmulatorTest, UnknownOutputVariableIsReportedByName) {
-  robot::RtdeClient client(kHost, emulator_->rtde_port());
+  robot::RtdeClient client(testing::kEmulatorHost, emulator_->rtde_port());
   client.NegotiateProtocol();
   client.GetControllerVersion();
   const std::string error = ErrorOf([&] {
@@ -137,12 +135,12 @@ TEST_F(RobotClientEmulatorTest, UnknownOutputVariableIsReportedByName) {
 }
 
 TEST_F(RobotClientEmulatorTest, InputRegisterOwnedByAnotherClientIsInUse) {
-  robot::RtdeClient first(kHost, emulator_->rtde_port());
+  robot::RtdeClient first(testing::kEmulatorHost, emulator_->rtde_port());
   first.NegotiateProtocol();
   const uint8_t recipe = first.SetupInputs({"input_int_register_24", "input_double_register_24"});
   EXPECT_EQ(recipe, 1);
   first.SendInputs(recipe, {int32_t{7}, 2.5});
-  robot::RtdeClient second(kHost, emulator_->rtde_port());
+  robot::RtdeClient second(testing::kEmulatorHost, emulator_->rtde_port());
   second.NegotiateProtocol();
   const std::string error = ErrorOf([&] { second.SetupInputs({"input_int_register_24"}); });
   EXPECT_NE(error.find("in use by another client: input_int_register_24"), std::string::npos)
@@ -175,12 +173,13 @@ TEST_F(RobotClientEmulatorTest, StreamsStateAtTheControllerRate) {
   EXPECT_EQ(last.safety_status_bits & robot::kSafetyNormal, robot::kSafetyNormal);
   EXPECT_EQ(last.runtime_state, robot::RuntimeState::kStopped);
   const JointVector truth = TestOptions().initial_q;
-  EXPECT_LT((ToJoints(last.actual_q) - truth).cwiseAbs().maxCoeff(), kNoise * 1.0001);
+  EXPECT_LT((ToJoints(last.actual_q) - truth).cwiseAbs().maxCoeff(),
+            testing::kEncoderNoise * 1.0001);
   EXPECT_GT((ToJoints(last.actual_q) - truth).cwiseAbs().maxCoeff(), 0);  // noise is on
 }
 
 TEST_F(RobotClientEmulatorTest, DashboardPowerOnAndBrakeReleaseSequence) {
-  robot::DashboardClient dashboard(kHost, emulator_->dashboard_port());
+  robot::DashboardClient dashboard(testing::kEmulatorHost, emulator_->dashboard_port());
   EXPECT_EQ(dashboard.banner(), robot::kDashboardBanner);
   EXPECT_EQ(dashboard.GetRobotMode(), RobotMode::kPowerOff);
   dashboard.PowerOn();
@@ -205,7 +204,7 @@ TEST_F(RobotClientEmulatorTest, DashboardPowerOnAndBrakeReleaseSequence) {
 TEST_F(RobotClientEmulatorTest, MoveJArrivesAndTcpPoseIsTheTrueArmsForwardKinematics) {
   PowerUp();
   auto client = StreamingClient();
-  robot::ScriptClient script(kHost, emulator_->secondary_port());
+  robot::ScriptClient script(testing::kEmulatorHost, emulator_->secondary_port());
   const robot::Joints target = {0.3, -1.2, 1.4, -1.9, -1.4, 0.5};
   script.Send(robot::MoveJProgram(target, 3.0, 1.5));
   auto monitor = robot::MotionMonitor::ForJoints(target);
@@ -213,7 +212,7 @@ TEST_F(RobotClientEmulatorTest, MoveJArrivesAndTcpPoseIsTheTrueArmsForwardKinema
   ASSERT_EQ(outcome.status, MotionStatus::kReached) << outcome.detail;
   const robot::RobotState& state = outcome.last_state;
   const JointVector q = ToJoints(state.actual_q);
-  EXPECT_LT((q - ToJoints(target)).cwiseAbs().maxCoeff(), 1.0001 * kNoise);
+  EXPECT_LT((q - ToJoints(target)).cwiseAbs().maxCoeff(), 1.0001 * testing::kEncoderNoise);
   const JointVector truth = emulator_->Snapshot().true_q;
   EXPECT_LT((truth - ToJoints(target)).cwiseAbs().maxCoeff(), 1e-12);
 
@@ -238,7 +237,7 @@ TEST_F(RobotClientEmulatorTest, MoveLReachesThePose) {
   Eigen::Isometry3d goal = robot::PoseFromVector(start->state.actual_tcp_pose);
   goal.translation() += Eigen::Vector3d(0.05, 0.03, -0.04);
   const auto goal_vector = robot::VectorFromPose(goal);
-  robot::ScriptClient script(kHost, emulator_->secondary_port());
+  robot::ScriptClient script(testing::kEmulatorHost, emulator_->secondary_port());
   script.Send(robot::MoveLProgram(goal_vector, 1.0, 0.2));
   auto monitor = robot::MotionMonitor::ForPose(goal_vector, {.position_m = 1e-4});
   const auto outcome = robot::WaitForMotion(client, monitor, net::Milliseconds(5000));
@@ -246,11 +245,11 @@ TEST_F(RobotClientEmulatorTest, MoveLReachesThePose) {
 }
 
 TEST_F(RobotClientEmulatorTest, ProtectiveStopMidMoveIsReportedAndRecoverable) {
-  robot::DashboardClient dashboard(kHost, emulator_->dashboard_port());
+  robot::DashboardClient dashboard(testing::kEmulatorHost, emulator_->dashboard_port());
   dashboard.PowerOn();
   dashboard.BrakeRelease();
   auto client = StreamingClient();
-  robot::ScriptClient script(kHost, emulator_->secondary_port());
+  robot::ScriptClient script(testing::kEmulatorHost, emulator_->secondary_port());
   const robot::Joints target = {
       1.0, -1.5707963267948966, 1.5707963267948966, -1.5707963267948966, -1.5707963267948966, 0};
   emulator_->ArmProtectiveStopAt(0.4);
@@ -266,7 +265,7 @@ TEST_F(RobotClientEmulatorTest, ProtectiveStopMidMoveIsReportedAndRecoverable) {
   // Not retried behind our back: the arm stays where it stopped.
   const auto later = client.ReceiveLatest(net::Milliseconds(2000));
   ASSERT_TRUE(later);
-  EXPECT_NEAR(later->state.actual_q[0], stopped_at, 3 * kNoise);
+  EXPECT_NEAR(later->state.actual_q[0], stopped_at, 3 * testing::kEncoderNoise);
   EXPECT_EQ(later->state.runtime_state, robot::RuntimeState::kStopped);
   // A program sent while stopped is refused with a runtime error.
   script.Send(robot::MoveJProgram(target, 2.0, 1.0));
@@ -286,7 +285,7 @@ TEST_F(RobotClientEmulatorTest, ProtectiveStopMidMoveIsReportedAndRecoverable) {
 TEST_F(RobotClientEmulatorTest, StopJPreemptsTheRunningMoveAndBrakesToRest) {
   PowerUp();
   auto client = StreamingClient();
-  robot::ScriptClient script(kHost, emulator_->secondary_port());
+  robot::ScriptClient script(testing::kEmulatorHost, emulator_->secondary_port());
   const robot::Joints target = {
       2.0, -1.5707963267948966, 1.5707963267948966, -1.5707963267948966, -1.5707963267948966, 0};
   script.Send(robot::MoveJProgram(target, 1.0, 1.0));
@@ -314,7 +313,7 @@ TEST_F(RobotClientEmulatorTest, StopJPreemptsTheRunningMoveAndBrakesToRest) {
 
 TEST_F(RobotClientEmulatorTest, UnsupportedScriptAnswersWithARuntimeError) {
   PowerUp();
-  robot::ScriptClient script(kHost, emulator_->secondary_port());
+  robot::ScriptClient script(testing::kEmulatorHost, emulator_->secondary_port());
   script.Send("def bad():\n  movej([0,-1.57,1.57,-1.57,-1.57,0])\n  set_tool_voltage(24)\nend\n");
   const auto messages = script.Poll(net::Milliseconds(2000));
   ASSERT_EQ(messages.size(), 1u);
@@ -326,7 +325,7 @@ TEST_F(RobotClientEmulatorTest, UnsupportedScriptAnswersWithARuntimeError) {
 }
 
 TEST_F(RobotClientEmulatorTest, SecondaryInterfaceAnnouncesVersionAndTheTrueKinematics) {
-  robot::ScriptClient script(kHost, emulator_->secondary_port());
+  robot::ScriptClient script(testing::kEmulatorHost, emulator_->secondary_port());
   const auto info = script.WaitForKinematics(net::Milliseconds(2000));
   ASSERT_TRUE(info);
   ASSERT_TRUE(script.version());
@@ -344,7 +343,7 @@ TEST_F(RobotClientEmulatorTest, SecondaryInterfaceAnnouncesVersionAndTheTrueKine
 
 TEST_F(RobotClientEmulatorTest, SocketDropIsReportedAsADisconnect) {
   auto client = StreamingClient();
-  robot::DashboardClient dashboard(kHost, emulator_->dashboard_port());
+  robot::DashboardClient dashboard(testing::kEmulatorHost, emulator_->dashboard_port());
   ASSERT_TRUE(client.Receive(net::Milliseconds(2000)));
   emulator_->DropConnections();
   std::string error;
@@ -368,7 +367,8 @@ TEST(RobotClientEmulator, ConnectingToAClosedPortNamesIt) {
     auto emulator = StartEmulator(TestOptions());
     port = emulator->rtde_port();
   }
-  const std::string error = ErrorOf([&] { robot::RtdeClient client(kHost, port); });
+  const std::string error =
+      ErrorOf([&] { robot::RtdeClient client(testing::kEmulatorHost, port); });
   EXPECT_NE(error.find(fmt::format("127.0.0.1:{}", port)), std::string::npos) << error;
 }
 

@@ -12,10 +12,6 @@
 namespace avc::robot::testing {
 namespace {
 
-bool Contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
-
 class RobotNodeAuthTest : public ::testing::Test {
  protected:
   void Start() {

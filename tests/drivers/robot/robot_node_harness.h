@@ -39,6 +39,11 @@ inline const std::array<double, 6> kTarget = {0.6, -1.3, 1.5, -1.8, -1.5, 0.2};
 
 using avc::testing::TestCommandKey;
 
+// A driver's reason or health detail says `part`.
+inline bool Contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
 inline sim::ur5::Ur5EmulatorOptions EmulatorOptions() {
   sim::ur5::Ur5EmulatorOptions options;
   options.cell = sim::PerturbedCell(21);

@@ -18,10 +18,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-bool Contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
-
 TEST(RobotNodeRecovery, DroppedControllerIsReconnectedAndCommandsRefusedMeanwhile) {
   RobotNodeHarness h;
   h.StartEmulator();

@@ -16,7 +16,7 @@
 #include "bench/surface/baselines/poisson_trimmed.h"
 #include "bench/surface/baselines/pound_patches.h"
 #include "core/surface/mesh_topology.h"
-#include "tests/surface/surface_test_points.h"
+#include "tests/core/surface/surface_test_points.h"
 
 namespace avc::surface::baselines {
 namespace {
