@@ -75,7 +75,11 @@ while read -r soname; do
       $1 ~ ("/" name "$") {print $1}' "$work/ldd" | head -n 1)
   [ -n "$lib" ] || fail "ldd cannot resolve $soname"
   owner=$(owner_of "$lib") || fail "no Debian package owns $lib"
-  if ! grep -qxF "$owner" "$work/depends"; then
+  # The owner itself, or a virtual package it provides ("liblapack3 | liblapack.so.3" is met by
+  # whichever LAPACK the alternatives chose, e.g. libatlas3-base).
+  provided=$(dpkg-query -W -f='${Provides}' "$owner" 2>/dev/null | tr ',' '\n' |
+             sed 's/(.*//; s/[[:space:]]//g' | grep -v '^$' || true)
+  if ! printf '%s\n%s\n' "$owner" "$provided" | grep -qxFf "$work/depends"; then
     missing="$missing $owner($soname)"
   fi
 done < "$work/needed"
