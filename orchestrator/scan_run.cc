@@ -123,12 +123,8 @@ class ScanRun {
 
   // avc scan's own configuration beside its stages' (config/), for the run that last used it.
   void KeepOwnConfig() {
-    if (options_.configuration.empty()) return;
-    const std::string file = "config/avc-scan.toml";
-    fs::create_directories(dir_ / "config");
-    WriteFileAtomically(dir_ / file, options_.configuration);
-    record_.options["config_file"] = file;
-    record_.options["config_sha256"] = Sha256Hex(options_.configuration);
+    const std::string& text = options_.configuration;
+    if (!text.empty()) KeepConfig("avc-scan", text, Sha256Hex(text), &record_.options);
   }
 
   void Step(ScanState state) {
@@ -346,19 +342,19 @@ class ScanRun {
     add("bytes_sent", static_cast<double>(answer.bytes_sent));
     add("bytes_received", static_cast<double>(answer.bytes_received));
     add("sends", answer.sends);
-    KeepConfig(answer, stage::kPlanService, &plan_jobs_);
+    KeepConfig(stage::kPlanService, answer.config_text, answer.config_sha256, &plan_jobs_);
     return plan::ReadPlanAnswer(folder / "answer");
   }
 
   // The configuration a stage's service ran with: its text in config/<service>.toml, named in
   // scan.json by its SHA-256, so the scan can be replayed or reconstructed with it.
-  void KeepConfig(const stage::StageAnswer& answer, const std::string& service,
+  void KeepConfig(const std::string& service, const std::string& text, const std::string& sha256,
                   nlohmann::json* entry) {
-    (*entry)["config_sha256"] = answer.config_sha256;
-    if (answer.config_text.empty()) return;
+    (*entry)["config_sha256"] = sha256;
+    if (text.empty()) return;
     const std::string file = fmt::format("config/{}.toml", service);
     fs::create_directories(dir_ / "config");
-    WriteFileAtomically(dir_ / file, answer.config_text);
+    WriteFileAtomically(dir_ / file, text);
     (*entry)["config_file"] = file;
   }
 
@@ -414,7 +410,7 @@ class ScanRun {
                             {"bytes_sent", answer.bytes_sent},
                             {"bytes_received", answer.bytes_received},
                             {"sends", answer.sends}};
-    KeepConfig(answer, job.service, &entry);
+    KeepConfig(job.service, answer.config_text, answer.config_sha256, &entry);
     record_.options["stages"][job.stage] = entry;
     Persist();
   }

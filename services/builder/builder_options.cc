@@ -8,7 +8,6 @@
 namespace avc::builder {
 namespace {
 
-using config::OptionSpec;
 using config::OptionTable;
 
 void AddMethods(OptionTable<ReconstructOptions>& table) {
