@@ -66,6 +66,27 @@ Eigen::Vector3f Perpendicular(const Eigen::Vector3f& direction) {
   return direction.cross(axis).normalized();
 }
 
+// The shortest rotation taking direction `from` to direction `to`, computed as Eigen's
+// Quaternion::FromTwoVectors does (so the meshes keep their bytes) but without the SVD that one
+// instantiates for opposite directions, which cost seconds of compile time: a half turn about a
+// perpendicular axis does there.
+Eigen::Quaternionf RotationBetween(const Eigen::Vector3f& from, const Eigen::Vector3f& to) {
+  const Eigen::Vector3f v0 = from.normalized();
+  const Eigen::Vector3f v1 = to.normalized();
+  const float c = v1.dot(v0);
+  if (c < -1.0f + Eigen::NumTraits<float>::dummy_precision()) {
+    const Eigen::Vector3f axis = Perpendicular(v0);
+    return Eigen::Quaternionf(0.0f, axis.x(), axis.y(), axis.z());
+  }
+  const Eigen::Vector3f axis = v0.cross(v1);
+  const float s = std::sqrt((1.0f + c) * 2.0f);
+  const float inverse_s = 1.0f / s;
+  Eigen::Quaternionf rotation;
+  rotation.vec() = axis * inverse_s;
+  rotation.w() = s * 0.5f;
+  return rotation;
+}
+
 }  // namespace
 
 MeshResolution ResolutionFor(int leaf_segments, float leaf_across_ratio) {
@@ -149,8 +170,7 @@ void AppendTube(const TubeSpec& tube, const Eigen::Vector3f& offset,
   for (int k = 0; k < rings; ++k) {
     const Eigen::Vector3f next_tangent =
         (points[std::min(k + 1, rings - 1)] - points[std::max(k - 1, 0)]).normalized();
-    const Eigen::Vector3f rotated =
-        Eigen::Quaternionf::FromTwoVectors(tangent, next_tangent) * normal;
+    const Eigen::Vector3f rotated = RotationBetween(tangent, next_tangent) * normal;
     tangent = next_tangent;
     normal = (rotated - rotated.dot(tangent) * tangent).normalized();
     const Eigen::Vector3f binormal = tangent.cross(normal);
