@@ -100,14 +100,16 @@ nlohmann::json CompareHandEyeMethods(const Observations& observations,
       {"Andreff", cv::CALIB_HAND_EYE_ANDREFF},
       {"Daniilidis", cv::CALIB_HAND_EYE_DANIILIDIS}};
   for (const auto& [name, flag] : hand_eye_methods) {
-    const Solver solve = [flag](const Observations& o) { return SolveWithOpenCvHandEye(o, flag); };
+    const Solver solve = [flag = flag](const Observations& o) {
+      return SolveWithOpenCvHandEye(o, flag);
+    };
     methods.push_back(Method(name, "OpenCV calibrateHandEye", LeaveOneOut(observations, solve),
                              Spread(observations, solve(observations))));
   }
   const std::vector<std::pair<std::string, int>> robot_world_methods = {
       {"Shah", cv::CALIB_ROBOT_WORLD_HAND_EYE_SHAH}, {"Li", cv::CALIB_ROBOT_WORLD_HAND_EYE_LI}};
   for (const auto& [name, flag] : robot_world_methods) {
-    const Solver solve = [flag](const Observations& o) {
+    const Solver solve = [flag = flag](const Observations& o) {
       return SolveWithOpenCvRobotWorld(o, flag);
     };
     methods.push_back(Method(name, "OpenCV calibrateRobotWorldHandEye",

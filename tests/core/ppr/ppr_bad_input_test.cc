@@ -78,7 +78,7 @@ TEST_F(PlantProxyBadInput, BadIntrinsicsAreRefused) {
 }
 
 TEST(PlantProxyBadBox, EmptyOrNonFiniteBoxIsRefused) {
-  EXPECT_THROW(PlantProxy(Eigen::AlignedBox3d()), std::invalid_argument);
+  EXPECT_THROW(PlantProxy{Eigen::AlignedBox3d()}, std::invalid_argument);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THROW(PlantProxy(Eigen::AlignedBox3d(Eigen::Vector3d(nan, 0, 0), Eigen::Vector3d::Ones())),
                std::invalid_argument);

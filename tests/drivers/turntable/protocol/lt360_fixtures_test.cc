@@ -110,8 +110,9 @@ TEST(Lt360Fixtures, EveryCaseParsesAsTheManualSays) {
   EXPECT_EQ(testing::CheckFixtureCases(file, Checks()), file["cases"].size());
   // Every exemption from byte-exact re-encoding names a case the file still has.
   for (const auto& [name, why] : NonCanonicalReplies()) {
-    EXPECT_TRUE(std::any_of(file["cases"].begin(), file["cases"].end(),
-                            [&name](const nlohmann::json& c) { return c.at("name") == name; }))
+    EXPECT_TRUE(
+        std::any_of(file["cases"].begin(), file["cases"].end(),
+                    [&name = name](const nlohmann::json& c) { return c.at("name") == name; }))
         << name << " (" << why << ") is no longer a fixture case";
   }
 }
