@@ -1,8 +1,7 @@
 #pragma once
 
 // The scan report's static pictures, written as inline SVG: the mesh seen orthographically from
-// the front, the side and the top (the page's fallback when WebGL is missing, and what a printout
-// shows), and a horizontal bar chart.
+// the front, the side and the top, a horizontal bar chart and a line chart.
 
 #include <array>
 #include <cstdint>
@@ -11,19 +10,13 @@
 #include <vector>
 
 #include "core/geometry/mesh.h"
+#include "report/mesh_render.h"
 
 namespace avc::report {
 
-enum class MeshView { kFront, kSide, kTop };  // looking along +y, along -x, down -z (z is up)
-
-// A view draws at most this many faces, the largest in projection: beyond it a page of 100k
-// faces would carry tens of MB of SVG for slivers a pixel wide.
-inline constexpr size_t kMaxSvgFaces = 20000;
-
-// One <polygon> per face (faces seen edge-on are skipped, and at most kMaxSvgFaces), painted
-// back to front (painter's algorithm) in its colour shaded by how squarely it faces the viewer.
-// All three views share one scale, fitted to the mesh's bounding box. `face_colours` holds one
-// RGB per face.
+// The mesh seen orthographically from `view` (mesh_render.h: every face drawn, depth-buffered), as
+// an SVG holding the picture as an embedded PNG and the view's name: the page's fallback when
+// WebGL is missing, and what a printout shows. `face_colours` holds one RGB per face.
 std::string MeshViewSvg(const geometry::Mesh& mesh,
                         const std::vector<std::array<uint8_t, 3>>& face_colours, MeshView view,
                         int size_px);
