@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/geometry/mesh.h"
+#include "core/util/ordered_draws.h"
 #include "sim/scene/plant.h"
 
 namespace avc::cluster {
@@ -71,9 +72,9 @@ PointSet SampleOrgans(const std::string& name, const geometry::Mesh& mesh, const
     const float r2 = static_cast<float>(Uniform(rng));
     Eigen::Vector3f p = (1.0f - r1) * a + r1 * (1.0f - r2) * b + r1 * r2 * c;
     Eigen::Vector3f n = (b - a).cross(c - a).normalized();
-    p += kPositionNoise * Eigen::Vector3f(Gaussian(rng), Gaussian(rng), Gaussian(rng));
-    n = (n + kNormalNoise * Eigen::Vector3f(Gaussian(rng), Gaussian(rng), Gaussian(rng)))
-            .normalized();
+    const auto gaussian = [&] { return Gaussian(rng); };
+    p += kPositionNoise * util::DrawVector3<Eigen::Vector3f>(gaussian);
+    n = (n + kNormalNoise * util::DrawVector3<Eigen::Vector3f>(gaussian)).normalized();
     set.points.push_back(p);
     set.normals.push_back(n);
     set.labels.push_back(keep.at(mesh.face_labels[faces[k]]));
@@ -93,7 +94,7 @@ PointSet SampleOrgans(const std::string& name, const geometry::Mesh& mesh, const
     for (int axis = 0; axis < 3; ++axis) {
       p[axis] = lo[axis] + static_cast<float>(Uniform(rng)) * (hi[axis] - lo[axis]);
     }
-    Eigen::Vector3f n(Gaussian(rng), Gaussian(rng), Gaussian(rng));
+    Eigen::Vector3f n = util::DrawVector3<Eigen::Vector3f>([&] { return Gaussian(rng); });
     if (n.norm() < 1e-3f) n = Eigen::Vector3f::UnitZ();
     set.points.push_back(p);
     set.normals.push_back(n.normalized());

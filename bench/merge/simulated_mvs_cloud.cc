@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "core/eval/surface_sampling.h"
+#include "core/util/ordered_draws.h"
 #include "sim/cell/random.h"
 
 namespace avc::bench {
@@ -33,7 +34,8 @@ mvs::MvsPoints SimulatedMvsCloud(const geometry::Mesh& truth,
   sim::DeterministicRandom random(eval::DeriveSeed(options.seed, 1));
   mvs::MvsPoints points;
   for (size_t i = 0; i < samples.size(); ++i) {
-    const Eigen::Vector3d noise(random.Normal(), random.Normal(), random.Normal());
+    const Eigen::Vector3d noise =
+        util::DrawVector3<Eigen::Vector3d>([&] { return random.Normal(); });
     AppendPoint(points, (samples.points[i] + options.noise_sigma * noise).cast<float>(),
                 samples.normals[i]);
   }
@@ -49,9 +51,11 @@ size_t InjectOutliers(mvs::MvsPoints& points, double fraction, const Eigen::Alig
   const auto count = static_cast<size_t>(std::llround(n * fraction / (1 - fraction)));
   sim::DeterministicRandom random(eval::DeriveSeed(seed, 2));
   for (size_t i = 0; i < count; ++i) {
-    const Eigen::Vector3d p(random.Uniform(box.min().x(), box.max().x()),
-                            random.Uniform(box.min().y(), box.max().y()),
-                            random.Uniform(box.min().z(), box.max().z()));
+    // z drawn first, as in util::DrawVector3.
+    Eigen::Vector3d p;
+    for (int axis = 2; axis >= 0; --axis) {
+      p[axis] = random.Uniform(box.min()[axis], box.max()[axis]);
+    }
     AppendPoint(points, p.cast<float>(), random.UnitVector().cast<float>());
   }
   return count;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/util/ordered_draws.h"
 #include "sim/cell/cell_truth.h"
 
 namespace avc::bench {
@@ -75,8 +76,10 @@ std::vector<calibration::TurntableView> SimulateTurntableViews(const TurntableSc
     // The board rides the world frame, which equals the table frame at angle 0.
     view.T_fixed_board =
         scenario.T_fixed_table * sim::TableFromWorld(cell, true_angle) * scenario.T_table_board0;
-    const Eigen::Vector3d position_noise(random.Normal(), random.Normal(), random.Normal());
-    const Eigen::Vector3d rotation_noise(random.Normal(), random.Normal(), random.Normal());
+    const Eigen::Vector3d position_noise =
+        util::DrawVector3<Eigen::Vector3d>([&] { return random.Normal(); });
+    const Eigen::Vector3d rotation_noise =
+        util::DrawVector3<Eigen::Vector3d>([&] { return random.Normal(); });
     view.T_fixed_board.translation() += noise.position_sigma * position_noise;
     view.T_fixed_board.linear() =
         view.T_fixed_board.linear() * RotationFromVector(noise.orientation_sigma * rotation_noise);

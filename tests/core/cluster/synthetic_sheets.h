@@ -10,6 +10,7 @@
 #include <random>
 
 #include "core/cluster/point_set.h"
+#include "core/util/ordered_draws.h"
 
 namespace avc::cluster::testing {
 
@@ -67,8 +68,8 @@ inline float Gaussian(std::mt19937_64& rng) {
 inline void AddNoise(PointSet* set, float position_sigma, float normal_sigma,
                      std::mt19937_64& rng) {
   for (size_t i = 0; i < set->points.size(); ++i) {
-    const Eigen::Vector3f dp(Gaussian(rng), Gaussian(rng), Gaussian(rng));
-    const Eigen::Vector3f dn(Gaussian(rng), Gaussian(rng), Gaussian(rng));
+    const Eigen::Vector3f dp = util::DrawVector3<Eigen::Vector3f>([&] { return Gaussian(rng); });
+    const Eigen::Vector3f dn = util::DrawVector3<Eigen::Vector3f>([&] { return Gaussian(rng); });
     set->points[i] += position_sigma * dp;
     set->normals[i] = (set->normals[i] + normal_sigma * dn).normalized();
   }

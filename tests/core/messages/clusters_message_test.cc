@@ -28,13 +28,18 @@ ClustersContent RandomClusters(size_t count, int32_t clusters, uint32_t seed) {
   merged.outside_proxy = 17;
   merged.in_sparse_voxels = 5;
   for (size_t i = 0; i < count; ++i) {
-    const Eigen::Vector3i voxel(static_cast<int>(rng() % 200) - 100,
-                                static_cast<int>(rng() % 200) - 100, static_cast<int>(rng() % 90));
+    // One draw per statement: the order of a call's arguments is unspecified.
+    Eigen::Vector3i voxel;
+    for (int k = 0; k < 2; ++k) voxel[k] = static_cast<int>(rng() % 200) - 100;
+    voxel.z() = static_cast<int>(rng() % 90);
     merged.voxels.push_back(voxel);
     merged.cloud.positions.push_back(((voxel.cast<float>().array() + unit()) * 0.002f).matrix());
-    merged.cloud.normals.push_back(Eigen::Vector3f(unit() - 0.5f, unit() - 0.5f, 1).normalized());
-    merged.cloud.colors.emplace_back(static_cast<uint8_t>(rng()), static_cast<uint8_t>(rng()),
-                                     static_cast<uint8_t>(rng()));
+    Eigen::Vector3f normal(0, 0, 1);
+    for (int k = 0; k < 2; ++k) normal[k] = unit() - 0.5f;
+    merged.cloud.normals.push_back(normal.normalized());
+    Eigen::Matrix<uint8_t, 3, 1> colour;
+    for (int k = 0; k < 3; ++k) colour[k] = static_cast<uint8_t>(rng());
+    merged.cloud.colors.push_back(colour);
     merged.confidence.push_back(unit());
     merged.point_counts.push_back(4 + rng() % 30);
     content.clusters.push_back(static_cast<int32_t>(rng() % (clusters + 1)) - 1);

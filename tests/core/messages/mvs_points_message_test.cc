@@ -24,11 +24,17 @@ mvs::MvsPoints RandomPoints(size_t count, uint32_t images, uint32_t seed) {
   std::mt19937 rng(seed);
   mvs::MvsPoints points;
   for (size_t i = 0; i < count; ++i) {
-    points.cloud.positions.emplace_back(Unit(rng) - 0.5f, Unit(rng) - 0.5f, Unit(rng) * 0.3f);
-    points.cloud.normals.push_back(
-        Eigen::Vector3f(Unit(rng) - 0.5f, Unit(rng) - 0.5f, 1.0f).normalized());
-    points.cloud.colors.emplace_back(static_cast<uint8_t>(rng()), static_cast<uint8_t>(rng()),
-                                     static_cast<uint8_t>(rng()));
+    // One draw per statement: the order of a call's arguments is unspecified.
+    Eigen::Vector3f position;
+    for (int k = 0; k < 3; ++k) position[k] = Unit(rng) - 0.5f;
+    position.z() = (position.z() + 0.5f) * 0.3f;
+    points.cloud.positions.push_back(position);
+    Eigen::Vector3f normal(0, 0, 1);
+    for (int k = 0; k < 2; ++k) normal[k] = Unit(rng) - 0.5f;
+    points.cloud.normals.push_back(normal.normalized());
+    Eigen::Matrix<uint8_t, 3, 1> colour;
+    for (int k = 0; k < 3; ++k) colour[k] = static_cast<uint8_t>(rng());
+    points.cloud.colors.push_back(colour);
     points.confidence.push_back(Unit(rng));
     std::vector<uint32_t> views;
     for (uint32_t v = 0; v < images; ++v) {

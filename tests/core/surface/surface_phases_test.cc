@@ -20,6 +20,7 @@
 #include "core/surface/mesh_topology.h"
 #include "core/surface/triangle_cleanup.h"
 #include "core/surface/triangulate_cell.h"
+#include "core/util/ordered_draws.h"
 #include "tests/core/surface/surface_test_points.h"
 
 namespace avc::surface {
@@ -407,7 +408,8 @@ double WorstOffCylinder(double noise, double* rms) {
     for (int j = -8; j <= 8; ++j) {
       const double phi = 0.003 * i / r;
       const Eigen::Vector3d p(r * std::sin(phi), 0.003 * j, r * std::cos(phi));
-      const Eigen::Vector3d jitter(test::Gaussian(rng), test::Gaussian(rng), test::Gaussian(rng));
+      const Eigen::Vector3d jitter =
+          util::DrawVector3<Eigen::Vector3d>([&] { return test::Gaussian(rng); });
       points.push_back((p + noise * jitter).cast<float>());
     }
   }

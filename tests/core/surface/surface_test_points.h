@@ -13,6 +13,7 @@
 
 #include "core/geometry/mesh.h"
 #include "core/surface/clustered_points.h"
+#include "core/util/ordered_draws.h"
 
 namespace avc::surface::test {
 
@@ -69,7 +70,7 @@ inline ClusteredPoints CylinderSheet(double r, double angle, double height, int 
     const double y = (Uniform(rng) - 0.5) * height;
     const Eigen::Vector3d normal(std::sin(phi), 0.0, std::cos(phi));
     Eigen::Vector3d p = r * normal + Eigen::Vector3d(0.0, y, 0.0);
-    if (noise > 0.0) p += noise * Eigen::Vector3d(Gaussian(rng), Gaussian(rng), Gaussian(rng));
+    if (noise > 0.0) p += noise * util::DrawVector3<Eigen::Vector3d>([&] { return Gaussian(rng); });
     AddPoint(set, p, normal, 0);
   }
   return set;
@@ -112,7 +113,7 @@ inline ClusteredPoints SampleLeaves(const geometry::Mesh& mesh, int n, double si
     const double r1 = std::sqrt(Uniform(rng));
     const double r2 = Uniform(rng);
     Eigen::Vector3d p = (1.0 - r1) * a + r1 * (1.0 - r2) * b + r1 * r2 * c;
-    p += sigma * Eigen::Vector3d(Gaussian(rng), Gaussian(rng), Gaussian(rng));
+    p += sigma * util::DrawVector3<Eigen::Vector3d>([&] { return Gaussian(rng); });
     AddPoint(set, p, (b - a).cross(c - a),
              mesh.face_labels[faces[k]] - geometry::labels::kLeafBase);
   }

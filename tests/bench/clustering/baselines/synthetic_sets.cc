@@ -6,6 +6,8 @@
 #include <random>
 #include <set>
 
+#include "core/util/ordered_draws.h"
+
 namespace avc::cluster::testing {
 namespace {
 
@@ -26,7 +28,7 @@ PointSet Blobs(int clusters, int points_each, uint32_t seed) {
     for (int i = 0; i < points_each; ++i) {
       Eigen::Vector3f offset;
       do {
-        offset = Eigen::Vector3f(Symmetric(rng), Symmetric(rng), Symmetric(rng));
+        offset = util::DrawVector3<Eigen::Vector3f>([&] { return Symmetric(rng); });
       } while (offset.squaredNorm() > 1.0f || offset.squaredNorm() < 1e-4f);
       set.points.push_back(centre + 0.01f * offset);
       set.normals.push_back(offset.normalized());
@@ -67,9 +69,8 @@ PointSet ConcentricRings(int points_each, uint32_t seed) {
                           (static_cast<float>(i) + 0.5f * Symmetric(rng)) /
                           static_cast<float>(points_each);
       const Eigen::Vector3f radial(std::cos(angle), std::sin(angle), 0.0f);
-      set.points.push_back(radius * radial + 0.001f * Eigen::Vector3f(Symmetric(rng),
-                                                                      Symmetric(rng),
-                                                                      Symmetric(rng)));
+      set.points.push_back(radius * radial + 0.001f * util::DrawVector3<Eigen::Vector3f>(
+                                                          [&] { return Symmetric(rng); }));
       set.normals.push_back(radial);
       set.labels.push_back(ring);
     }

@@ -24,6 +24,7 @@
 #include "core/calibration/pipeline/intrinsics_file.h"
 #include "core/kinematics/forward_kinematics.h"
 #include "core/launch/child_process.h"
+#include "core/util/ordered_draws.h"
 #include "services/calibrator/calibration_plan.h"
 #include "sim/cell/perturbation.h"
 #include "sim/cell/view_selection.h"
@@ -284,11 +285,12 @@ TEST(CalibrateCell, ANoisierArmKeepsTheHandEyeThatPredictsLeftOutPoses) {
   std::normal_distribution<double> rotation_rad(0, 0.05 * kDeg), translation_m(0, 0.5e-3);
   for (CalibrationShot& shot : rendered.dataset.shots) {
     if (shot.purpose != ShotPurpose::kHandEye) continue;
-    const Eigen::Vector3d w(rotation_rad(random), rotation_rad(random), rotation_rad(random));
+    const Eigen::Vector3d w =
+        util::DrawVector3<Eigen::Vector3d>([&] { return rotation_rad(random); });
     shot.T_base_flange.linear() = Eigen::AngleAxisd(w.norm(), w.normalized()).toRotationMatrix() *
                                   shot.T_base_flange.linear();
     shot.T_base_flange.translation() +=
-        Eigen::Vector3d(translation_m(random), translation_m(random), translation_m(random));
+        util::DrawVector3<Eigen::Vector3d>([&] { return translation_m(random); });
   }
   SaveCalibrationDataset(rendered.dataset);
   CalibrateOptions options;
