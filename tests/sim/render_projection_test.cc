@@ -78,8 +78,9 @@ TEST(RenderProjection, MidpointErrorBoundHolds) {
   const GuardBox& g = lens.guard();
   std::mt19937_64 rng(5);
   auto random_point = [&] {
-    return Eigen::Vector2d(g.x_min + (g.x_max - g.x_min) * UnitFromBits(rng),
-                           g.y_min + (g.y_max - g.y_min) * UnitFromBits(rng));
+    // y drawn first (the order GCC evaluated these as one call's arguments).
+    const double y = g.y_min + (g.y_max - g.y_min) * UnitFromBits(rng);
+    return Eigen::Vector2d(g.x_min + (g.x_max - g.x_min) * UnitFromBits(rng), y);
   };
   int tight = 0;
   for (int i = 0; i < 20000; ++i) {

@@ -150,7 +150,9 @@ HandEyeScenario MakeHandEyeScenario(const HandEyeScenarioOptions& options, uint6
   // The board lies flat on the table, its centre within 3 cm of the table centre, any yaw.
   const Eigen::Vector3d board_centre_board((options.board_columns - 1) * options.square_m / 2,
                                            (options.board_rows - 1) * options.square_m / 2, 0);
-  const Eigen::Vector3d board_centre_table(random.Symmetric(0.03), random.Symmetric(0.03), 0);
+  // y drawn before x, as in util::DrawVector3.
+  const double board_centre_y = random.Symmetric(0.03);
+  const Eigen::Vector3d board_centre_table(random.Symmetric(0.03), board_centre_y, 0);
   const Eigen::Isometry3d T_table_board =
       Eigen::Translation3d(board_centre_table) *
       Eigen::AngleAxisd(random.Uniform(0, 2 * std::numbers::pi), Eigen::Vector3d::UnitZ()) *
@@ -170,8 +172,9 @@ HandEyeScenario MakeHandEyeScenario(const HandEyeScenarioOptions& options, uint6
       const double azimuth =
           robot_azimuth + random.Symmetric(options.azimuth_half_range_deg) * kDegree;
       const double roll = random.Symmetric(options.roll_half_range_deg) * kDegree;
+      const double target_y = random.Symmetric(0.02);
       const Eigen::Vector3d target =
-          board_centre_table + Eigen::Vector3d(random.Symmetric(0.02), random.Symmetric(0.02), 0);
+          board_centre_table + Eigen::Vector3d(random.Symmetric(0.02), target_y, 0);
       const Eigen::Vector3d centre = sim::ViewpointOnSphere(target, distance, elevation, azimuth);
       const Eigen::Isometry3d T_table_cam = sim::LookAtPose(centre, target, robot_base_table) *
                                             Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitZ());

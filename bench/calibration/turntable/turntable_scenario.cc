@@ -33,7 +33,8 @@ TurntableScenario RandomTurntableScenario(sim::DeterministicRandom& random, doub
                                                                      std::sin(tilt_direction), 0))
                             .toRotationMatrix() *
                         Eigen::Vector3d::UnitZ();
-  scenario.centre_table = Eigen::Vector3d(random.Symmetric(0.005), random.Symmetric(0.005), 0);
+  const double centre_y = random.Symmetric(0.005);  // y before x, as in util::DrawVector3
+  scenario.centre_table = Eigen::Vector3d(random.Symmetric(0.005), centre_y, 0);
 
   // The board flat on the table, origin board_offset from the axis in a random direction, turned
   // randomly in its plane.

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "core/calibration/hand_eye/robot_world_hand_eye.h"
+#include "core/util/ordered_draws.h"
 #include "tests/core/calibration/hand_eye/hand_eye_test_util.h"
 
 namespace avc::calibration::hand_eye {
@@ -92,7 +93,8 @@ TEST(HandEyeDegeneracy, RefusesTooLittleRotation) {
   const Eigen::Isometry3d start = GoodPoses()[1];
   std::vector<Eigen::Isometry3d> poses;
   for (int i = 0; i < 8; ++i) {
-    const Eigen::Vector3d t(random.Symmetric(0.2), random.Symmetric(0.2), random.Symmetric(0.2));
+    const Eigen::Vector3d t =
+        util::DrawVector3<Eigen::Vector3d>([&] { return random.Symmetric(0.2); });
     poses.push_back(start * Pose(testing::RandomRotation(random, 1.5 * testing::kDegree), t));
   }
   const std::string reason = Refusal(Observe(poses));
