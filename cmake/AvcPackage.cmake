@@ -3,10 +3,20 @@
 # them under /usr. Everything avc reads at run time is here: the report's assets are compiled in,
 # and `avc spy` finds the message types jar in ../share/avc next to the binary.
 include(GNUInstallDirs)
+# Installing (and cpack) needs only the installed targets, not the whole tree with the tests.
+set(CMAKE_SKIP_INSTALL_ALL_DEPENDENCY ON)
 
 install(TARGETS avc RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 if(AVC_LCMTYPES_JAR)
   install(FILES ${AVC_LCMTYPES_JAR} DESTINATION ${CMAKE_INSTALL_DATADIR}/avc)
+endif()
+# What a lab runs, and all scripts/setup builds: the installed files above. The tests and the
+# fuzz smoke binaries are built by scripts/test (the whole tree), so an installation does not
+# compile them (BENCHMARKS.md, build).
+add_custom_target(avc_programs)
+add_dependencies(avc_programs avc)
+if(TARGET avc_lcmtypes_java)
+  add_dependencies(avc_programs avc_lcmtypes_java)
 endif()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/launch/ DESTINATION ${CMAKE_INSTALL_DATADIR}/avc/launch)
 install(PROGRAMS ${PROJECT_SOURCE_DIR}/scripts/setup-lab-host
