@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <opencv2/imgproc.hpp>
+#include <utility>
 
 namespace avc::report {
 namespace {
@@ -41,16 +42,19 @@ class Canvas {
   void Fill(const std::array<Eigen::Vector2f, 3>& p, const std::array<float, 3>& depth,
             const cv::Vec3b& bgr) {
     const float area = Edge(p[0], p[1], p[2]);
-    if (area == 0) return;  // seen edge-on
+    // Seen edge-on, or so large that its area overflows: nothing to draw.
+    if (area == 0 || !std::isfinite(area)) return;
+    const int last = image_.cols - 1;
+    // The triangle's pixel range, clamped to the canvas before it becomes an int.
+    const auto range = [last](float lo, float hi) {
+      return std::pair<int, int>(static_cast<int>(std::floor(std::clamp(lo, 0.0f, 1.0f * last))),
+                                 static_cast<int>(std::ceil(std::clamp(hi, 0.0f, 1.0f * last))));
+    };
+    const auto [x0, x1] =
+        range(std::min({p[0].x(), p[1].x(), p[2].x()}), std::max({p[0].x(), p[1].x(), p[2].x()}));
+    const auto [y0, y1] =
+        range(std::min({p[0].y(), p[1].y(), p[2].y()}), std::max({p[0].y(), p[1].y(), p[2].y()}));
     const int size = image_.cols;
-    const int x0 =
-        std::max(0, static_cast<int>(std::floor(std::min({p[0].x(), p[1].x(), p[2].x()}))));
-    const int x1 =
-        std::min(size - 1, static_cast<int>(std::ceil(std::max({p[0].x(), p[1].x(), p[2].x()}))));
-    const int y0 =
-        std::max(0, static_cast<int>(std::floor(std::min({p[0].y(), p[1].y(), p[2].y()}))));
-    const int y1 =
-        std::min(size - 1, static_cast<int>(std::ceil(std::max({p[0].y(), p[1].y(), p[2].y()}))));
     for (int y = y0; y <= y1; ++y) {
       for (int x = x0; x <= x1; ++x) {
         const Eigen::Vector2f centre(x + 0.5f, y + 0.5f);
@@ -101,8 +105,15 @@ cv::Mat RenderMeshView(const geometry::Mesh& mesh,
   const int size = size_px * kSupersample;
   Canvas canvas(size);
   if (mesh.num_faces() > 0) {
-    Eigen::Vector3f min, max;
-    geometry::Bounds(mesh, &min, &max);
+    // The finite vertices' bounds: one bad vertex must not shrink the picture to a point.
+    Eigen::Vector3f min = Eigen::Vector3f::Constant(std::numeric_limits<float>::max());
+    Eigen::Vector3f max = -min;
+    for (const Eigen::Vector3f& v : mesh.vertices) {
+      if (!v.allFinite()) continue;
+      min = min.cwiseMin(v);
+      max = max.cwiseMax(v);
+    }
+    if ((min.array() > max.array()).any()) min = max = Eigen::Vector3f::Zero();
     const Eigen::Vector3f centre = (min + max) / 2;
     const float extent = std::max((max - min).maxCoeff(), 1e-6f);
     const float margin = 8.0f * kSupersample;
@@ -117,6 +128,7 @@ cv::Mat RenderMeshView(const geometry::Mesh& mesh,
         corners[k] = {half + scale * v[k].dot(axes.right), half - scale * v[k].dot(axes.up)};
         depth[k] = v[k].dot(axes.towards_viewer);
       }
+      if (!(v[0].allFinite() && v[1].allFinite() && v[2].allFinite())) continue;  // a bad corner
       const Eigen::Vector3f normal = (v[1] - v[0]).cross(v[2] - v[0]);
       const float length = normal.norm();
       const float facing = length > 0 ? std::fabs(normal.dot(axes.towards_viewer)) / length : 0;

@@ -19,10 +19,10 @@ enum class MeshView { kFront, kSide, kTop };  // looking along +y, along -x, dow
 // "front", "side" or "top".
 const char* NameOf(MeshView view);
 
-// A size_px x size_px 8-bit BGR image on white; the mesh's bounding box fits it with an 8-pixel
-// margin (the same scale for all three views). Each face is painted in its colour
-// (`face_colours`, one RGB per face) shaded by how squarely it faces the viewer. Same mesh, same
-// bytes.
+// A size_px x size_px 8-bit BGR image on white; the bounding box of the mesh's finite vertices
+// fits it with an 8-pixel margin (the same scale for all three views), and a face with a
+// non-finite corner is left out. Each face is painted in its colour (`face_colours`, one RGB per
+// face) shaded by how squarely it faces the viewer. Same mesh, same bytes.
 cv::Mat RenderMeshView(const geometry::Mesh& mesh,
                        const std::vector<std::array<uint8_t, 3>>& face_colours, MeshView view,
                        int size_px);

@@ -1,10 +1,11 @@
 // The report's static renders: every face drawn however small it projects, the nearest face in
-// front, an empty mesh a blank picture.
+// front, faces with non-finite corners left out, an empty mesh a blank picture.
 
 #include "report/mesh_render.h"
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <opencv2/core.hpp>
 
 namespace avc::report {
@@ -79,6 +80,20 @@ TEST(MeshRender, TheNearestFaceIsSeenWhateverTheFaceOrder) {
     const cv::Mat side = RenderMeshView(mesh, colours, MeshView::kSide, 100);
     EXPECT_EQ(cv::countNonZero(side.reshape(1) != 255), 0);
   }
+}
+
+TEST(MeshRender, AFaceWithANonFiniteCornerIsLeftOut) {
+  geometry::Mesh mesh;
+  AppendFrontSquare(2, 0.0f, &mesh);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  mesh.vertices.emplace_back(nan, 0.0f, 0.5f);
+  mesh.vertices.emplace_back(0.5f, std::numeric_limits<float>::infinity(), 0.5f);
+  const int bad_nan = static_cast<int>(mesh.vertices.size()) - 2, bad_inf = bad_nan + 1;
+  mesh.faces.emplace_back(0, 1, bad_nan);
+  mesh.faces.emplace_back(0, bad_inf, 2);
+  const std::vector<std::array<uint8_t, 3>> grey(mesh.num_faces(), {100, 100, 100});
+  const cv::Mat image = RenderMeshView(mesh, grey, MeshView::kFront, 50);
+  EXPECT_EQ(image.at<cv::Vec3b>(25, 25), cv::Vec3b(100, 100, 100));
 }
 
 TEST(MeshRender, AnEmptyMeshIsABlankPicture) {
